@@ -1,0 +1,9 @@
+"""relief_cad: curve/curve intersection by relief perspective and Bézier clipping."""
+
+from __future__ import annotations
+
+from .errors import ReliefCadError
+from .results import Intersection, IntersectionList, Overlap
+
+__all__ = ["Intersection", "IntersectionList", "Overlap", "ReliefCadError"]
+__version__ = "0.1.0"

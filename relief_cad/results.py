@@ -1,0 +1,140 @@
+"""Result types of the intersectors.
+
+Parameters are always reported in each input's own parameterisation: for a
+:class:`~relief_cad.RationalBezier` that is its ``t`` in ``[0, 1]``; the CAD
+adapters map them to the edge's own OCCT parameter.
+
+>>> import numpy as np
+>>> hit = Intersection(t=0.5, u=0.25, point=np.array([1.0, 2.0]), kind="crossing")
+>>> hit.kind, hit.t, hit.u
+('crossing', 0.5, 0.25)
+>>> Overlap(t=(0.0, 0.5), u=(1.0, 0.5)).reversed_direction
+True
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Iterable, Literal, Union
+
+import numpy as np
+
+from ._types import FloatArray
+
+__all__ = [
+    "Intersection",
+    "IntersectionList",
+    "Overlap",
+    "ParameterBox",
+    "Result",
+]
+
+ContactKind = Literal["crossing", "tangent"]
+
+
+@dataclass(frozen=True)
+class Intersection:
+    """An isolated common point of two curves (or a double point of one).
+
+    Attributes
+    ----------
+    t : float
+        Parameter on the first curve.
+    u : float
+        Parameter on the second curve (for self-intersections, ``t < u``).
+    point : ndarray, shape (d,)
+        The intersection point in model units (the mean of ``a(t)`` and ``b(u)``).
+    kind : {"crossing", "tangent"}
+        ``"crossing"`` for a transversal meeting, ``"tangent"`` for a tangent
+        contact or a near-miss closer than the tolerance.
+    distance : float
+        ``|a(t) - b(u)|`` in model units (0 up to rounding for true meetings;
+        the gap for a near-miss contact).
+    """
+
+    t: float
+    u: float
+    point: FloatArray
+    kind: ContactKind
+    distance: float = 0.0
+
+    def __repr__(self) -> str:
+        pt = ", ".join(f"{float(c):.17g}" for c in np.asarray(self.point))
+        return (
+            f"Intersection(t={self.t!r}, u={self.u!r}, point=({pt}), kind={self.kind!r}"
+            + (f", distance={self.distance:.3g}" if self.distance else "")
+            + ")"
+        )
+
+
+@dataclass(frozen=True)
+class Overlap:
+    """A stretch along which two curves coincide.
+
+    ``a(t[0]) == b(u[0])`` and ``a(t[1]) == b(u[1])`` with ``t[0] < t[1]``; so
+    ``u[0] > u[1]`` when ``b`` runs against ``a``.
+
+    Attributes
+    ----------
+    t : tuple of float
+        Parameter interval ``(t0, t1)`` on the first curve, ``t0 < t1``.
+    u : tuple of float
+        Matching parameters ``(u0, u1)`` on the second curve.
+    kind : "overlap"
+        Always ``"overlap"``.
+    """
+
+    t: tuple[float, float]
+    u: tuple[float, float]
+    kind: Literal["overlap"] = field(default="overlap")
+
+    @property
+    def reversed_direction(self) -> bool:
+        """True when the second curve runs against the first along the overlap."""
+        return self.u[1] < self.u[0]
+
+
+Result = Union[Intersection, Overlap]
+
+
+@dataclass(frozen=True)
+class ParameterBox:
+    """A parameter rectangle ``[t0, t1] x [u0, u1]`` left unresolved by a budget."""
+
+    t0: float
+    t1: float
+    u0: float
+    u1: float
+
+
+class IntersectionList(list[Result]):
+    """The results of an intersection, sorted by ``t``, plus what was left unresolved.
+
+    A plain ``list`` of :class:`Intersection` and :class:`Overlap` objects with one
+    extra attribute, :attr:`unresolved`: the parameter boxes a budget left open
+    (empty when the answer is complete).
+
+    >>> IntersectionList([]).complete
+    True
+    """
+
+    unresolved: tuple[ParameterBox, ...]
+
+    def __init__(self, items: Iterable[Result] = (), unresolved: Iterable[ParameterBox] = ()) -> None:
+        super().__init__(items)
+        self.unresolved = tuple(unresolved)
+
+    @property
+    def complete(self) -> bool:
+        """True when no budget ran out (every parameter box was resolved)."""
+        return not self.unresolved
+
+    @property
+    def points(self) -> list[Intersection]:
+        """The isolated points only."""
+        return [r for r in self if isinstance(r, Intersection)]
+
+    @property
+    def overlaps(self) -> list[Overlap]:
+        """The overlaps only."""
+        return [r for r in self if isinstance(r, Overlap)]
