@@ -1,26 +1,26 @@
-"""Named default tolerances (all documented, all overridable per call).
+r"""Named default tolerances (all documented, all overridable per call).
 
 Distances are in model units. When a caller passes ``tol=None`` the
 intersectors use :func:`default_tolerance` of the inputs' control points:
 
 .. math::
 
-    \\mathrm{tol} = \\mathrm{RELATIVE\\_TOLERANCE} \\cdot \\mathrm{size}
-        + \\mathrm{ROUNDING\\_ULPS} \\cdot \\varepsilon \\cdot \\max |x|
+    \mathrm{tol} = \mathrm{RELATIVE\_TOLERANCE} \cdot \mathrm{size}
+        + \mathrm{ROUNDING\_ULPS} \cdot \varepsilon \cdot \max |x|
 
 where ``size`` is the diagonal of the joint bounding box of the control
 points and ``max |x|`` their largest absolute coordinate (the second term keeps
 the tolerance above the rounding noise of curves far from the origin).
 
 >>> import numpy as np
->>> round(default_tolerance(np.array([[0.0, 0.0], [3.0, 4.0]])), 15)
+>>> round(default_tolerance(np.array([[0.0, 0.0], [3.0, 4.0]])), 12)
 5e-09
 """
 
 from __future__ import annotations
 
 import math
-from typing import Iterable
+from collections.abc import Iterable
 
 import numpy as np
 

@@ -1,0 +1,618 @@
+r"""Rational Bézier curves in the plane and in space.
+
+A rational Bézier curve of degree ``n`` with control points ``V_i`` (rows of an
+``(n + 1, d)`` array, ``d`` in {2, 3}) and weights ``w_i > 0`` is
+
+.. math::
+
+    P(t) = \frac{\sum_i w_i V_i B_i^n(t)}{\sum_i w_i B_i^n(t)}, \qquad t \in [0, 1].
+
+Internally the curve is kept as its *homogeneous* control points
+``[w_i V_i, w_i]`` (shape ``(n + 1, d + 1)``): a polynomial curve one
+dimension up, on which evaluation, subdivision and projective maps are plain
+linear algebra. Evaluation and subdivision use de Casteljau's algorithm on
+these homogeneous points (stable; no power basis).
+
+>>> import numpy as np
+>>> arc = RationalBezier([[1.0, 0.0], [1.0, 1.0], [0.0, 1.0]], [1.0, np.sqrt(0.5), 1.0])
+>>> p = arc(0.5)
+>>> bool(np.isclose(np.hypot(*p), 1.0))
+True
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, overload
+
+import numpy as np
+
+from ._types import FloatArray, ParamsLike, PointsLike
+from .errors import (
+    DegenerateCurveError,
+    DegreeError,
+    InputTypeError,
+    NonFiniteError,
+    ProjectionError,
+    ShapeError,
+    WeightError,
+)
+
+__all__ = ["RationalBezier"]
+
+
+def _as_float_array(value: Any, name: str) -> FloatArray:
+    if isinstance(value, RationalBezier):
+        raise InputTypeError(f"{name} should be an array of numbers, not a RationalBezier")
+    try:
+        arr = np.array(value, dtype=np.float64)
+    except (TypeError, ValueError) as exc:
+        raise InputTypeError(
+            f"{name} should be an array of real numbers, not {type(value).__name__}"
+        ) from exc
+    return arr
+
+
+def _check_finite(arr: FloatArray, name: str) -> None:
+    if not np.all(np.isfinite(arr)):
+        if arr.ndim == 0:
+            raise NonFiniteError(f"{name} should be a finite number, not {float(arr)!r}")
+        bad = tuple(int(i) for i in np.argwhere(~np.isfinite(arr))[0])
+        raise NonFiniteError(f"{name} should be finite numbers; entry {bad} is {float(arr[bad])!r}")
+
+
+def _check_weights(w: FloatArray, name: str = "weights") -> None:
+    if not np.all(w > 0.0):
+        i = int(np.argmin(w > 0.0))
+        raise WeightError(f"{name} should all be > 0; weight {i} is {float(w[i])!r}")
+
+
+def _decasteljau(h: FloatArray, t: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """Evaluate homogeneous control points ``h`` (n+1, k) at parameters ``t`` (m,).
+
+    Returns the values ``H(t)`` (m, k) and derivatives ``H'(t)`` (m, k).
+    """
+    n = h.shape[0] - 1
+    m = t.shape[0]
+    b = np.broadcast_to(h, (m,) + h.shape).copy()
+    s = (1.0 - t)[:, None, None]
+    tt = t[:, None, None]
+    for r in range(1, n):
+        b[:, : n + 1 - r] = s * b[:, : n + 1 - r] + tt * b[:, 1 : n + 2 - r]
+    b0 = b[:, 0]
+    b1 = b[:, 1]
+    value = s[:, 0] * b0 + tt[:, 0] * b1
+    deriv = n * (b1 - b0)
+    return value, deriv
+
+
+def _blossom_rows(h: FloatArray, params: FloatArray) -> FloatArray:
+    """Blossom values: row ``j`` is the blossom of ``h`` at the n arguments ``params[j]``.
+
+    ``params`` has shape (r, n); returns (r, k).
+    """
+    n = h.shape[0] - 1
+    r = params.shape[0]
+    b = np.broadcast_to(h, (r,) + h.shape).copy()
+    for level in range(1, n + 1):
+        tt = params[:, level - 1][:, None, None]
+        b[:, : n + 1 - level] = (1.0 - tt) * b[:, : n + 1 - level] + tt * b[:, 1 : n + 2 - level]
+    out: FloatArray = b[:, 0].copy()
+    return out
+
+
+def _product_bernstein(f: FloatArray, g: FloatArray) -> FloatArray:
+    """Bernstein coefficients of the product of two Bernstein polynomials (rows are coefficients)."""
+    p = f.shape[0] - 1
+    q = g.shape[0] - 1
+    out_shape = (p + q + 1,) + np.broadcast_shapes(f.shape[1:], g.shape[1:])
+    out = np.zeros(out_shape)
+    for i in range(p + 1):
+        ci = math.comb(p, i)
+        for j in range(q + 1):
+            out[i + j] += ci * math.comb(q, j) * f[i] * g[j]
+    for k in range(p + q + 1):
+        out[k] /= math.comb(p + q, k)
+    return out
+
+
+def _elevate_rows(h: FloatArray, times: int) -> FloatArray:
+    for _ in range(times):
+        n = h.shape[0] - 1
+        new = np.empty((n + 2,) + h.shape[1:])
+        new[0] = h[0]
+        new[n + 1] = h[n]
+        for i in range(1, n + 1):
+            a = i / (n + 1)
+            new[i] = a * h[i - 1] + (1.0 - a) * h[i]
+        h = new
+    return h
+
+
+class RationalBezier:
+    """An immutable rational Bézier curve in the plane (d = 2) or in space (d = 3).
+
+    Parameters
+    ----------
+    control_points : array_like, shape (n + 1, d)
+        Control points ``V_i`` as rows, ``d`` in {2, 3}, ``n >= 1``.
+    weights : array_like, shape (n + 1,), optional
+        Weights ``w_i > 0``. ``None`` means all ones (a polynomial curve).
+
+    Raises
+    ------
+    ShapeError
+        If ``control_points`` is not ``(n + 1, 2)`` or ``(n + 1, 3)``, or ``weights`` does not
+        have ``n + 1`` entries.
+    DegreeError
+        If there is only one control point (degree 0 is not a curve).
+    NonFiniteError
+        If a coordinate or weight is NaN or infinite.
+    WeightError
+        If a weight is zero or negative.
+
+    Examples
+    --------
+    >>> c = RationalBezier([[0, 0], [1, 2], [2, 0]])
+    >>> c.degree, c.dim
+    (2, 2)
+    >>> c(0.5).tolist()
+    [1.0, 1.0]
+    >>> RationalBezier([[0, 0]])
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.DegreeError: A curve needs at least 2 control points (degree >= 1), not 1.
+    """
+
+    __slots__ = ("_h", "_points", "_weights", "_polynomial")
+
+    _h: FloatArray
+    _points: FloatArray
+    _weights: FloatArray
+    _polynomial: bool
+
+    def __init__(self, control_points: PointsLike, weights: ParamsLike | None = None) -> None:
+        pts = _as_float_array(control_points, "control_points")
+        if pts.ndim != 2 or pts.shape[1] not in (2, 3):
+            raise ShapeError(
+                f"control_points should have shape (n + 1, 2) or (n + 1, 3), not {pts.shape}"
+            )
+        if pts.shape[0] < 2:
+            raise DegreeError(
+                f"A curve needs at least 2 control points (degree >= 1), not {pts.shape[0]}."
+            )
+        _check_finite(pts, "control_points")
+        npts = pts.shape[0]
+        if weights is None:
+            w = np.ones(npts)
+        else:
+            w = _as_float_array(weights, "weights")
+            if w.shape != (npts,):
+                raise ShapeError(
+                    f"weights should have shape ({npts},) to match {npts} control points, not {w.shape}"
+                )
+            _check_finite(w, "weights")
+            _check_weights(w)
+        h = np.empty((npts, pts.shape[1] + 1))
+        h[:, :-1] = pts * w[:, None]
+        h[:, -1] = w
+        _check_finite(h, "weighted control points")
+        self._set(h, pts, w)
+
+    def _set(self, h: FloatArray, pts: FloatArray, w: FloatArray) -> None:
+        for arr in (h, pts, w):
+            arr.flags.writeable = False
+        self._h = h
+        self._points = pts
+        self._weights = w
+        self._polynomial = bool(np.all(w == w[0]))
+
+    @classmethod
+    def _trusted(cls, h: FloatArray) -> RationalBezier:
+        """Build from homogeneous points known to be finite with positive weights (no checks)."""
+        obj = cls.__new__(cls)
+        h = np.array(h, dtype=np.float64)
+        w = h[:, -1].copy()
+        obj._set(h, h[:, :-1] / w[:, None], w)
+        return obj
+
+    @classmethod
+    def from_homogeneous(cls, homogeneous: PointsLike) -> RationalBezier:
+        """Build a curve from homogeneous control points ``[w_i V_i, w_i]``.
+
+        Parameters
+        ----------
+        homogeneous : array_like, shape (n + 1, d + 1)
+            Rows ``(w x, w y, w)`` (planar) or ``(w x, w y, w z, w)`` (space); the last
+            column holds the weights, which must be > 0.
+
+        Returns
+        -------
+        RationalBezier
+
+        Examples
+        --------
+        >>> RationalBezier.from_homogeneous([[0, 0, 1], [2, 2, 2], [2, 0, 1]]).control_points.tolist()
+        [[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]]
+        >>> RationalBezier.from_homogeneous([[0, 0, 1], [1, 1, -1]])
+        Traceback (most recent call last):
+        ...
+        relief_cad.errors.WeightError: homogeneous weights (last column) should all be > 0; weight 1 is -1.0
+        """
+        h = _as_float_array(homogeneous, "homogeneous")
+        if h.ndim != 2 or h.shape[1] not in (3, 4):
+            raise ShapeError(
+                f"homogeneous control points should have shape (n + 1, 3) or (n + 1, 4), not {h.shape}"
+            )
+        if h.shape[0] < 2:
+            raise DegreeError(
+                f"A curve needs at least 2 control points (degree >= 1), not {h.shape[0]}."
+            )
+        _check_finite(h, "homogeneous")
+        _check_weights(h[:, -1], "homogeneous weights (last column)")
+        pts = h[:, :-1] / h[:, -1:]
+        _check_finite(pts, "control points (homogeneous / weight)")
+        obj = cls.__new__(cls)
+        obj._set(h, pts, h[:, -1].copy())
+        return obj
+
+    # ------------------------------------------------------------------ properties
+    @property
+    def degree(self) -> int:
+        """The degree ``n`` (number of control points minus one)."""
+        return int(self._h.shape[0] - 1)
+
+    @property
+    def dim(self) -> int:
+        """The dimension ``d`` of the space the curve lies in (2 or 3)."""
+        return int(self._h.shape[1] - 1)
+
+    @property
+    def control_points(self) -> FloatArray:
+        """Control points, shape ``(n + 1, d)``, read-only."""
+        return self._points
+
+    @property
+    def weights(self) -> FloatArray:
+        """Weights, shape ``(n + 1,)``, read-only, all > 0."""
+        return self._weights
+
+    @property
+    def homogeneous(self) -> FloatArray:
+        """Homogeneous control points ``[w_i V_i, w_i]``, shape ``(n + 1, d + 1)``, read-only."""
+        return self._h
+
+    @property
+    def is_polynomial(self) -> bool:
+        """True when all weights are equal (the curve is a polynomial Bézier curve)."""
+        return self._polynomial
+
+    # ------------------------------------------------------------------ evaluation
+    @overload
+    def evaluate(self, t: float) -> FloatArray: ...
+
+    @overload
+    def evaluate(self, t: FloatArray) -> FloatArray: ...
+
+    def evaluate(self, t: ParamsLike) -> FloatArray:
+        """Evaluate the curve by homogeneous de Casteljau.
+
+        Parameters
+        ----------
+        t : float or array_like, shape (m,)
+            Parameters. Values outside ``[0, 1]`` extrapolate, as long as the
+            curve's weight stays positive there.
+
+        Returns
+        -------
+        ndarray, shape (d,) for a scalar ``t``, else (m, d)
+            Points in model units.
+
+        Raises
+        ------
+        NonFiniteError
+            If a parameter is NaN or infinite.
+        ProjectionError
+            If the denominator ``sum w_i B_i(t)`` is not positive at a requested
+            (extrapolated) parameter.
+
+        Examples
+        --------
+        >>> c = RationalBezier([[0, 0], [1, 1]])
+        >>> c.evaluate([0.0, 0.25]).tolist()
+        [[0.0, 0.0], [0.25, 0.25]]
+        >>> c.evaluate(float("nan"))
+        Traceback (most recent call last):
+        ...
+        relief_cad.errors.NonFiniteError: t should be a finite number, not nan
+        """
+        values, _ = self._eval(t, derivative=False)
+        return values
+
+    __call__ = evaluate
+
+    def derivative(self, t: ParamsLike) -> FloatArray:
+        """Return the derivative ``dP/dt`` at ``t`` (quotient rule on homogeneous values).
+
+        Parameters
+        ----------
+        t : float or array_like, shape (m,)
+
+        Returns
+        -------
+        ndarray, shape (d,) or (m, d)
+            Tangent vectors in model units per unit parameter.
+
+        Examples
+        --------
+        >>> RationalBezier([[0, 0], [1, 2], [2, 0]]).derivative(0.0).tolist()
+        [2.0, 4.0]
+        """
+        _, deriv = self._eval(t, derivative=True)
+        return deriv
+
+    def _eval(self, t: ParamsLike, derivative: bool) -> tuple[FloatArray, FloatArray]:
+        tt = _as_float_array(t, "t")
+        scalar = tt.ndim == 0
+        if tt.ndim > 1:
+            raise ShapeError(f"t should be a scalar or a 1-D array, not shape {tt.shape}")
+        _check_finite(tt, "t")
+        tv = tt.reshape(-1)
+        value, dvalue = _decasteljau(self._h, tv)
+        w = value[:, -1:]
+        if not np.all(w > 0.0):
+            i = int(np.argmin(w[:, 0] > 0.0))
+            raise ProjectionError(
+                f"the curve's weight should be > 0 where it is evaluated; at t={tv[i]!r} it is "
+                f"{float(w[i, 0])!r}"
+            )
+        pts = value[:, :-1] / w
+        if derivative:
+            der = (dvalue[:, :-1] - pts * dvalue[:, -1:]) / w
+        else:
+            der = pts
+        if scalar:
+            return pts[0], der[0]
+        return pts, der
+
+    # ------------------------------------------------------------------ construction
+    def hodograph(self) -> RationalBezier:
+        """Return the derivative curve ``P'(t)`` as a Bézier curve (vectors as control points).
+
+        For a polynomial curve this is the usual hodograph of degree ``n - 1``
+        (elevated to degree 1 if ``n = 1``); for a rational curve it is the
+        rational curve of degree ``2n`` with numerator ``X' w - X w'`` (elevated)
+        and denominator ``w^2``.
+
+        Examples
+        --------
+        >>> c = RationalBezier([[0, 0], [1, 2], [2, 0]])
+        >>> c.hodograph().control_points.tolist()
+        [[2.0, 4.0], [2.0, -4.0]]
+        >>> bool(np.allclose(c.hodograph()(0.3), c.derivative(0.3)))
+        True
+        """
+        n = self.degree
+        h = self._h
+        if self._polynomial:
+            pts = n * np.diff(self._points, axis=0)
+            if n == 1:
+                pts = np.vstack([pts, pts])
+            return RationalBezier(pts)
+        x = h[:, :-1]
+        w = h[:, -1]
+        dx = n * np.diff(x, axis=0)
+        dw = n * np.diff(w)
+        num = _product_bernstein(dx, w[:, None]) - _product_bernstein(x, dw[:, None])
+        den = _product_bernstein(w, w)
+        num = _elevate_rows(num, 1)
+        hh = np.hstack([num, den[:, None]])
+        return RationalBezier._trusted(hh)
+
+    def split(self, t: float = 0.5) -> tuple[RationalBezier, RationalBezier]:
+        """Split the curve at ``t`` into the pieces over ``[0, t]`` and ``[t, 1]``.
+
+        Each piece is reparametrised to ``[0, 1]``.
+
+        Raises
+        ------
+        DegenerateCurveError
+            If ``t`` is not strictly between 0 and 1.
+
+        Examples
+        --------
+        >>> left, right = RationalBezier([[0, 0], [2, 2]]).split(0.25)
+        >>> left.control_points.tolist(), right.control_points.tolist()
+        ([[0.0, 0.0], [0.5, 0.5]], [[0.5, 0.5], [2.0, 2.0]])
+        """
+        tv = float(t)
+        if not (0.0 < tv < 1.0):
+            raise DegenerateCurveError(f"split parameter should lie in (0, 1), not {t!r}")
+        h = self._h
+        n = self.degree
+        left = np.empty_like(h)
+        right = np.empty_like(h)
+        b = h.copy()
+        left[0] = b[0]
+        right[n] = b[n]
+        for r in range(1, n + 1):
+            b[: n + 1 - r] = (1.0 - tv) * b[: n + 1 - r] + tv * b[1 : n + 2 - r]
+            left[r] = b[0]
+            right[n - r] = b[n - r]
+        return RationalBezier._trusted(left), RationalBezier._trusted(right)
+
+    def segment(self, t0: float, t1: float) -> RationalBezier:
+        """Return the piece of the curve over ``[t0, t1]``, reparametrised to ``[0, 1]``.
+
+        Computed exactly by blossoming the homogeneous control points, so any
+        interval works, including ``t0 > t1`` (reversed direction) and intervals
+        reaching outside ``[0, 1]`` (extrapolation) as long as the weights stay
+        positive there.
+
+        Raises
+        ------
+        DegenerateCurveError
+            If ``t0 == t1``.
+        WeightError
+            If the extrapolated piece would have non-positive weights (the interval
+            reaches a point at infinity of the curve).
+
+        Examples
+        --------
+        >>> c = RationalBezier([[0, 0], [1, 2], [2, 0]])
+        >>> c.segment(0.5, 0.0).control_points.tolist()
+        [[1.0, 1.0], [0.5, 1.0], [0.0, 0.0]]
+        >>> c.segment(0.5, 0.5)
+        Traceback (most recent call last):
+        ...
+        relief_cad.errors.DegenerateCurveError: segment needs t0 != t1, got t0 = t1 = 0.5
+        """
+        a = float(t0)
+        b = float(t1)
+        if not (math.isfinite(a) and math.isfinite(b)):
+            raise NonFiniteError(f"segment bounds should be finite, not ({t0!r}, {t1!r})")
+        if a == b:
+            raise DegenerateCurveError(f"segment needs t0 != t1, got t0 = t1 = {a!r}")
+        n = self.degree
+        params = np.empty((n + 1, n))
+        for i in range(n + 1):
+            params[i, : n - i] = a
+            params[i, n - i :] = b
+        h = _blossom_rows(self._h, params)
+        if not np.all(h[:, -1] > 0.0):
+            raise WeightError(
+                f"the piece over [{a!r}, {b!r}] would have non-positive weights "
+                f"{h[:, -1].tolist()}: it reaches past a point at infinity of the curve"
+            )
+        _check_finite(h, "segment control points")
+        return RationalBezier._trusted(h)
+
+    def reversed(self) -> RationalBezier:
+        """Return the same curve run backwards (``t -> 1 - t``).
+
+        Examples
+        --------
+        >>> RationalBezier([[0, 0], [1, 0]]).reversed().control_points.tolist()
+        [[1.0, 0.0], [0.0, 0.0]]
+        """
+        return RationalBezier._trusted(self._h[::-1].copy())
+
+    def elevate(self, r: int = 1) -> RationalBezier:
+        """Raise the degree by ``r`` without changing the curve or its parameterisation.
+
+        Examples
+        --------
+        >>> RationalBezier([[0, 0], [2, 0]]).elevate().control_points.tolist()
+        [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]]
+        >>> RationalBezier([[0, 0], [2, 0]]).elevate(-1)
+        Traceback (most recent call last):
+        ...
+        relief_cad.errors.DegreeError: elevate needs r >= 0, not -1
+        """
+        if not isinstance(r, (int, np.integer)) or r < 0:
+            raise DegreeError(f"elevate needs r >= 0, not {r!r}")
+        return RationalBezier._trusted(_elevate_rows(self._h.copy(), int(r)))
+
+    def standard_form(self) -> RationalBezier:
+        """Return the same geometry with end weights 1 (a Möbius reparametrisation).
+
+        The weights become ``w_i λ^i / w_0`` with ``λ = (w_0 / w_n)^{1/n}``; the control
+        points are unchanged. The new curve at ``s`` is the old one at
+        ``t = λ s / (1 - s + λ s)`` (a Möbius reparametrisation fixing 0 and 1).
+
+        Examples
+        --------
+        >>> c = RationalBezier([[0, 0], [1, 1], [2, 0]], [2.0, 1.0, 0.5]).standard_form()
+        >>> [round(float(x), 12) for x in c.weights]
+        [1.0, 1.0, 1.0]
+        """
+        n = self.degree
+        w = self._weights
+        log_lam = (math.log(w[0]) - math.log(w[n])) / n
+        scale = np.exp(np.arange(n + 1) * log_lam - math.log(w[0]))
+        new_w = w * scale
+        new_w[0] = 1.0
+        new_w[n] = 1.0
+        return RationalBezier(self._points.copy(), new_w)
+
+    def bounding_box(self) -> tuple[FloatArray, FloatArray]:
+        """Return ``(lo, hi)``, the box of the control points, which contains the curve.
+
+        Examples
+        --------
+        >>> lo, hi = RationalBezier([[0, 0], [1, 2], [2, 0]]).bounding_box()
+        >>> lo.tolist(), hi.tolist()
+        ([0.0, 0.0], [2.0, 2.0])
+        """
+        return self._points.min(axis=0), self._points.max(axis=0)
+
+    def transformed(self, matrix: PointsLike) -> RationalBezier:
+        """Apply a projective map (collineation) exactly through the homogeneous control points.
+
+        Parameters
+        ----------
+        matrix : array_like, shape (d + 1, d + 1)
+            Homogeneous matrix acting on column vectors ``(x, y, [z,] 1)``; an affine
+            map has last row ``(0, ..., 0, 1)``.
+
+        Raises
+        ------
+        ShapeError
+            If the matrix is not ``(d + 1, d + 1)``.
+        ProjectionError
+            If the image would have non-positive weights (part of the curve goes
+            to or through infinity under the map).
+
+        Examples
+        --------
+        >>> shift = [[1, 0, 5], [0, 1, 0], [0, 0, 1]]
+        >>> RationalBezier([[0, 0], [1, 0]]).transformed(shift).control_points.tolist()
+        [[5.0, 0.0], [6.0, 0.0]]
+        """
+        m = _as_float_array(matrix, "matrix")
+        k = self.dim + 1
+        if m.shape != (k, k):
+            raise ShapeError(f"matrix should have shape ({k}, {k}) for a {self.dim}-D curve, not {m.shape}")
+        _check_finite(m, "matrix")
+        h = self._h @ m.T
+        if not np.all(h[:, -1] > 0.0):
+            i = int(np.argmin(h[:, -1] > 0.0))
+            raise ProjectionError(
+                f"the transformed weights should all be > 0; weight {i} becomes {float(h[i, -1])!r} "
+                "(the map sends that control point to or past infinity)"
+            )
+        _check_finite(h, "transformed control points")
+        return RationalBezier._trusted(h)
+
+    def embedded(self, dim: int = 3) -> RationalBezier:
+        """Return a planar curve placed in the plane ``z = 0`` of space (a space curve unchanged).
+
+        Examples
+        --------
+        >>> RationalBezier([[1, 2], [3, 4]]).embedded().control_points.tolist()
+        [[1.0, 2.0, 0.0], [3.0, 4.0, 0.0]]
+        """
+        if dim not in (2, 3) or dim < self.dim:
+            raise ShapeError(f"embedded needs dim 3 (or the curve's own dim {self.dim}), not {dim!r}")
+        if dim == self.dim:
+            return self
+        h = np.zeros((self._h.shape[0], 4))
+        h[:, :2] = self._h[:, :2]
+        h[:, 3] = self._h[:, 2]
+        return RationalBezier._trusted(h)
+
+    # ------------------------------------------------------------------ dunder
+    def __repr__(self) -> str:
+        pts = np.array2string(self._points, separator=", ", precision=6).replace("\n", "")
+        if self._polynomial and self._weights[0] == 1.0:
+            return f"RationalBezier({pts})"
+        w = np.array2string(self._weights, separator=", ", precision=6)
+        return f"RationalBezier({pts}, weights={w})"
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, RationalBezier):
+            return NotImplemented
+        return self._h.shape == other._h.shape and bool(np.array_equal(self._h, other._h))
+
+    def __hash__(self) -> int:
+        return hash((self._h.shape, self._h.tobytes()))
