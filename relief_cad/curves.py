@@ -194,7 +194,8 @@ class RationalBezier:
             _check_finite(w, "weights")
             _check_weights(w)
         h = np.empty((npts, pts.shape[1] + 1))
-        h[:, :-1] = pts * w[:, None]
+        with np.errstate(over="ignore", invalid="ignore"):
+            h[:, :-1] = pts * w[:, None]
         h[:, -1] = w
         _check_finite(h, "weighted control points")
         self._set(h, pts, w)

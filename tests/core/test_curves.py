@@ -1,0 +1,227 @@
+"""Tests of RationalBezier: geometry preserved by every operation, against an mpmath reference."""
+
+from __future__ import annotations
+
+import math
+
+import mpmath
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from relief_cad import RationalBezier
+from relief_cad.errors import (
+    DegenerateCurveError,
+    DegreeError,
+    InputTypeError,
+    NonFiniteError,
+    ProjectionError,
+    ReliefCadError,
+    ShapeError,
+    WeightError,
+)
+from tests.core.strategies import curves, params
+
+SAMPLES = np.linspace(0.0, 1.0, 17)
+
+
+def scale_of(c: RationalBezier) -> float:
+    return float(np.max(np.abs(c.control_points))) + 1.0
+
+
+def mp_eval(c: RationalBezier, t: float, dps: int = 50) -> list[mpmath.mpf]:
+    """Reference: the defining formula sum w_i V_i B_i / sum w_i B_i in 50-digit arithmetic."""
+    with mpmath.workdps(dps):
+        n = c.degree
+        tt = mpmath.mpf(t)
+        num = [mpmath.mpf(0)] * c.dim
+        den = mpmath.mpf(0)
+        for i in range(n + 1):
+            b = mpmath.binomial(n, i) * tt**i * (1 - tt) ** (n - i) * mpmath.mpf(float(c.weights[i]))
+            den += b
+            for j in range(c.dim):
+                num[j] += b * mpmath.mpf(float(c.control_points[i, j]))
+        return [x / den for x in num]
+
+
+@settings(max_examples=60)
+@given(curves(), params)
+def test_de_casteljau_matches_mpmath_reference(c: RationalBezier, t: float) -> None:
+    ref = np.array([float(x) for x in mp_eval(c, t)])
+    got = c(t)
+    assert got.shape == (c.dim,)
+    np.testing.assert_allclose(got, ref, rtol=0, atol=1e-13 * scale_of(c) * max(c.weights) / min(c.weights))
+
+
+@settings(max_examples=40)
+@given(curves(), params)
+def test_derivative_matches_mpmath_differentiation(c: RationalBezier, t: float) -> None:
+    with mpmath.workdps(50):
+        n, tt = c.degree, mpmath.mpf(t)
+        w = [mpmath.mpf(float(x)) for x in c.weights]
+        pts = [[mpmath.mpf(float(x)) for x in row] for row in c.control_points]
+        b = [mpmath.binomial(n, i) * tt**i * (1 - tt) ** (n - i) for i in range(n + 1)]
+        db = [mpmath.binomial(n, i) * (i * tt ** (i - 1) * (1 - tt) ** (n - i) if i else 0)
+              - mpmath.binomial(n, i) * ((n - i) * tt**i * (1 - tt) ** (n - i - 1) if i < n else 0)
+              for i in range(n + 1)]
+        den = sum(w[i] * b[i] for i in range(n + 1))
+        dden = sum(w[i] * db[i] for i in range(n + 1))
+        ref = []
+        for j in range(c.dim):
+            num = sum(w[i] * pts[i][j] * b[i] for i in range(n + 1))
+            dnum = sum(w[i] * pts[i][j] * db[i] for i in range(n + 1))
+            ref.append(float((dnum * den - num * dden) / den**2))
+    got = c.derivative(t)
+    bound = 1e-9 * (np.max(np.abs(ref)) + scale_of(c)) * (max(c.weights) / min(c.weights)) ** 2
+    np.testing.assert_allclose(got, ref, rtol=0, atol=bound)
+    np.testing.assert_allclose(c.hodograph()(t), got, rtol=0, atol=bound)
+
+
+@settings(max_examples=60)
+@given(curves(), st.floats(0.01, 0.99))
+def test_split_preserves_geometry(c: RationalBezier, t: float) -> None:
+    left, right = c.split(t)
+    tol = 1e-12 * scale_of(c) * max(c.weights) / min(c.weights)
+    np.testing.assert_allclose(left(SAMPLES), c(SAMPLES * t), atol=tol, rtol=0)
+    np.testing.assert_allclose(right(SAMPLES), c(t + SAMPLES * (1 - t)), atol=tol, rtol=0)
+    assert np.array_equal(left.control_points[-1], right.control_points[0])
+
+
+@settings(max_examples=60)
+@given(curves(), st.floats(0.0, 1.0), st.floats(0.0, 1.0))
+def test_segment_any_interval_including_reversed(c: RationalBezier, t0: float, t1: float) -> None:
+    if abs(t1 - t0) < 1e-3:
+        with pytest.raises(DegenerateCurveError) if t0 == t1 else _null():
+            c.segment(t0, t1)
+        return
+    s = c.segment(t0, t1)
+    tol = 1e-11 * scale_of(c) * max(c.weights) / min(c.weights)
+    np.testing.assert_allclose(s(SAMPLES), c(t0 + SAMPLES * (t1 - t0)), atol=tol, rtol=0)
+
+
+@settings(max_examples=40)
+@given(curves(rational=False), st.floats(-0.5, 0.0), st.floats(1.0, 1.5))
+def test_segment_extrapolates_polynomial_curves(c: RationalBezier, t0: float, t1: float) -> None:
+    s = c.segment(t0, t1)
+    tol = 1e-10 * scale_of(c)
+    np.testing.assert_allclose(s(SAMPLES), c(t0 + SAMPLES * (t1 - t0)), atol=tol * 50, rtol=0)
+
+
+def test_segment_past_a_pole_is_an_error() -> None:
+    c = RationalBezier([[0, 0], [1, 1], [2, 0]], [1.0, 10.0, 1.0])
+    with pytest.raises(WeightError, match="non-positive weights"):
+        c.segment(-3.0, 1.0)
+
+
+@settings(max_examples=60)
+@given(curves(), st.integers(1, 4))
+def test_elevate_and_reversed_preserve_geometry(c: RationalBezier, r: int) -> None:
+    e = c.elevate(r)
+    assert e.degree == c.degree + r
+    tol = 1e-12 * scale_of(c) * max(c.weights) / min(c.weights)
+    np.testing.assert_allclose(e(SAMPLES), c(SAMPLES), atol=tol, rtol=0)
+    np.testing.assert_allclose(c.reversed()(SAMPLES), c(1 - SAMPLES), atol=tol, rtol=0)
+    assert c.reversed().reversed() == c
+
+
+@settings(max_examples=60)
+@given(curves())
+def test_standard_form_is_a_moebius_reparametrisation(c: RationalBezier) -> None:
+    s = c.standard_form()
+    assert s.weights[0] == 1.0 and s.weights[-1] == 1.0
+    np.testing.assert_array_equal(s.control_points, c.control_points)
+    lam = (c.weights[0] / c.weights[-1]) ** (1.0 / c.degree)
+    t = lam * SAMPLES / (1 - SAMPLES + lam * SAMPLES)
+    tol = 1e-11 * scale_of(c) * max(c.weights) / min(c.weights)
+    np.testing.assert_allclose(s(SAMPLES), c(t), atol=tol, rtol=0)
+
+
+@settings(max_examples=40)
+@given(curves())
+def test_bounding_box_contains_curve_and_homogeneous_round_trip(c: RationalBezier) -> None:
+    lo, hi = c.bounding_box()
+    pts = c(np.linspace(0, 1, 101))
+    assert np.all(pts >= lo - 1e-12 * scale_of(c)) and np.all(pts <= hi + 1e-12 * scale_of(c))
+    back = RationalBezier.from_homogeneous(c.homogeneous)
+    np.testing.assert_allclose(back.control_points, c.control_points, rtol=1e-15, atol=1e-15)
+    np.testing.assert_array_equal(back.weights, c.weights)
+
+
+@settings(max_examples=40)
+@given(curves(dim=2), st.floats(-1, 1), st.floats(-1, 1), st.floats(0.0, 0.2))
+def test_transformed_applies_collineation_exactly(c: RationalBezier, a: float, b: float, p: float) -> None:
+    m = np.array([[1.0 + a, b, 3.0], [-b, 1.0 - a, -2.0], [p * 0.01, -p * 0.01, 1.0]])
+    try:
+        img = c.transformed(m)
+    except ProjectionError:
+        assert np.any(c.homogeneous @ m[2] <= 0)
+        return
+    h = np.column_stack([c(SAMPLES), np.ones(len(SAMPLES))]) @ m.T
+    expected = h[:, :2] / h[:, 2:]
+    np.testing.assert_allclose(img(SAMPLES), expected, atol=1e-10 * (scale_of(c) + 5) * max(c.weights) / min(c.weights))
+
+
+def test_embedded_and_immutability() -> None:
+    c = RationalBezier([[0, 0], [1, 2], [3, 1]], [1, 2, 1])
+    e = c.embedded()
+    assert e.dim == 3 and np.all(e.control_points[:, 2] == 0)
+    np.testing.assert_allclose(e(0.3)[:2], c(0.3))
+    with pytest.raises(ValueError):
+        c.control_points[0, 0] = 5.0
+    with pytest.raises(ValueError):
+        c.weights[0] = 5.0
+    assert not c.is_polynomial and RationalBezier([[0, 0], [1, 1]]).is_polynomial
+    assert "weights" in repr(c)
+
+
+class _null:
+    def __enter__(self) -> None:
+        return None
+
+    def __exit__(self, *a: object) -> bool:
+        return False
+
+
+@pytest.mark.parametrize(
+    ("points", "weights", "error", "builtin", "message"),
+    [
+        ([[0, 0], [1, float("nan")]], None, NonFiniteError, ValueError, "finite"),
+        ([[0, 0], [float("inf"), 1]], None, NonFiniteError, ValueError, "finite"),
+        ([[0, 0], [1, 1]], [1.0, float("nan")], NonFiniteError, ValueError, "finite"),
+        ([[0, 0], [1, 1]], [1.0, 0.0], WeightError, ValueError, "> 0; weight 1 is 0.0"),
+        ([[0, 0], [1, 1]], [1.0, -2.0], WeightError, ValueError, "weight 1 is -2.0"),
+        ([[0, 0], [1, 1]], [1.0, 1.0, 1.0], ShapeError, ValueError, r"shape \(2,\)"),
+        ([0, 0, 1], None, ShapeError, ValueError, r"\(n \+ 1, 2\)"),
+        ([[0, 0, 0, 0], [1, 1, 1, 1]], None, ShapeError, ValueError, "not"),
+        ([[1, 2]], None, DegreeError, ValueError, "at least 2 control points"),
+        ("abc", None, InputTypeError, TypeError, "real numbers"),
+        ([[1e308, 0], [1, 1]], [10.0, 1.0], NonFiniteError, ValueError, "weighted"),
+    ],
+)
+def test_bad_input_gives_clear_errors(points, weights, error, builtin, message) -> None:  # type: ignore[no-untyped-def]
+    with pytest.raises(error, match=message) as info:
+        RationalBezier(points, weights)
+    assert isinstance(info.value, ReliefCadError) and isinstance(info.value, builtin)
+
+
+def test_bad_parameters_and_operations() -> None:
+    c = RationalBezier([[0, 0], [1, 2], [2, 0]], [1.0, 3.0, 1.0])
+    with pytest.raises(NonFiniteError):
+        c([0.5, math.inf])
+    with pytest.raises(ShapeError):
+        c(np.zeros((2, 2)))
+    with pytest.raises(DegenerateCurveError):
+        c.split(1.0)
+    with pytest.raises(ShapeError):
+        c.transformed(np.eye(4))
+    with pytest.raises(ProjectionError):
+        c.transformed(np.diag([1.0, 1.0, -1.0]))
+    with pytest.raises(ProjectionError, match="weight should be > 0"):
+        c(-2.0)
+    with pytest.raises(NonFiniteError):
+        c.segment(0.0, math.nan)
+    with pytest.raises(InputTypeError):
+        RationalBezier(c)  # type: ignore[arg-type]
+    with pytest.raises(ShapeError):
+        c.embedded(4)
