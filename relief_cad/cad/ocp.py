@@ -1,0 +1,832 @@
+r"""OCP conversion: OCCT edges to rational Bézier segments and back.
+
+Every OCP call of relief_cad lives here (1-based arrays, handles, locations);
+the build123d and CadQuery modules only unwrap ``.wrapped`` and rewrap results.
+
+Conversion is exact (up to rounding) for lines, circles, ellipses, parabolas,
+hyperbolas, Bézier curves, B-splines (rational or not, clamped or periodic,
+any knot multiplicities) and trimmed curves of those. Each edge becomes a list
+of :class:`Segment`: a :class:`~relief_cad.curves.RationalBezier` (in global
+coordinates: the edge's ``TopLoc_Location`` is applied) plus the exact map
+between the segment parameter ``s`` in ``[0, 1]`` and the edge's own OCCT
+parameter ``t``:
+
+* lines, parabolas, Bézier and B-spline spans: ``t = t0 + s (t1 - t0)``;
+* circle and ellipse arcs (the parameter is an angle; each span of at most 90°
+  with half-angle :math:`\alpha` and middle :math:`\theta_m` is the standard
+  rational quadratic with weights :math:`1, \cos\alpha, 1`):
+
+  .. math:: t = \theta_m + 2 \arctan\bigl(\tan(\alpha/2)\,(2s - 1)\bigr)
+
+* hyperbola arcs (weights :math:`1, \cosh\beta, 1`):
+
+  .. math:: t = U_m + 2 \operatorname{artanh}\bigl(\tanh(\beta/2)\,(2s - 1)\bigr)
+
+Other curves (offset curves, edges known only on a surface...) are
+approximated by OCCT (``GeomConvert_ApproxCurve``) and flagged
+``approximate=True`` with the achieved error, or refused with
+:class:`~relief_cad.errors.UnsupportedCurveError` when approximation is off.
+
+>>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+>>> from OCP.gp import gp_Pnt
+>>> edge = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(2, 0, 0)).Edge()
+>>> [seg] = edge_segments(edge)
+>>> seg.curve.control_points.tolist(), seg.t_range
+([[0.0, 0.0, 0.0], [2.0, 0.0, 0.0]], (0.0, 2.0))
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from ..curves import RationalBezier
+from ..errors import (
+    AdapterUnavailableError,
+    DegenerateCurveError,
+    InputTypeError,
+    InvalidInputError,
+    OcctError,
+    UnsupportedCurveError,
+)
+
+try:
+    from OCP.BRep import BRep_Builder, BRep_Tool
+    from OCP.BRepAdaptor import BRepAdaptor_Curve
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeVertex
+    from OCP.Geom import (
+        Geom_BezierCurve,
+        Geom_BSplineCurve,
+        Geom_Circle,
+        Geom_Ellipse,
+        Geom_Hyperbola,
+        Geom_Line,
+        Geom_Parabola,
+        Geom_TrimmedCurve,
+    )
+    from OCP.Geom2d import Geom2d_BezierCurve
+    from OCP.GeomAbs import GeomAbs_Shape
+    from OCP.GeomConvert import GeomConvert_ApproxCurve, GeomConvert_BSplineCurveToBezierCurve
+    from OCP.gp import gp_Pnt, gp_Pnt2d
+    from OCP.TColgp import TColgp_Array1OfPnt, TColgp_Array1OfPnt2d
+    from OCP.TColStd import TColStd_Array1OfReal
+    from OCP.TopAbs import TopAbs_EDGE
+    from OCP.TopExp import TopExp
+    from OCP.TopLoc import TopLoc_Location
+    from OCP.TopoDS import TopoDS, TopoDS_Compound, TopoDS_Edge, TopoDS_Shape, TopoDS_Vertex
+    from OCP.TopTools import TopTools_IndexedMapOfShape
+except ImportError as exc:  # pragma: no cover - exercised only without the CAD stack
+    raise AdapterUnavailableError(
+        'relief_cad.cad needs OCP (cadquery-ocp); install it with: pip install "relief-cad[cad]"'
+    ) from exc
+
+__all__ = [
+    "APPROXIMATION_TOLERANCE",
+    "MAX_CONIC_SPAN",
+    "Segment",
+    "edge_segments",
+    "edges_of",
+    "edge_tolerance",
+    "edge_value",
+    "from_geom_bezier",
+    "make_compound",
+    "make_vertex",
+    "planar_frame",
+    "to_edge",
+    "to_geom2d_bezier",
+    "to_geom_bezier",
+    "trim_edge",
+    "unwrap",
+]
+
+MAX_CONIC_SPAN: float = math.pi / 2
+"""Largest angle (radians) one rational quadratic span of a circle or ellipse covers."""
+
+MAX_HYPERBOLA_SPAN: float = 1.0
+"""Largest hyperbolic-parameter width one rational quadratic hyperbola span covers."""
+
+APPROXIMATION_TOLERANCE: float = 1e-7
+"""Default 3D tolerance (model units) for curves OCCT has to approximate (offset curves...)."""
+
+_MAX_BEZIER_DEGREE = 25  # OCCT's Geom_BezierCurve limit
+
+
+# --------------------------------------------------------------------------- segments
+@dataclass(frozen=True)
+class Segment:
+    """One rational Bézier piece of an edge and its exact parameter map.
+
+    Attributes
+    ----------
+    curve : RationalBezier
+        The piece in global coordinates, control points shape ``(n + 1, 3)``.
+    t0, t1 : float
+        The edge parameters at ``s = 0`` and ``s = 1`` (``t0 < t1``).
+    mapping : {"linear", "circular", "hyperbolic"}
+        How ``s`` maps to ``t`` (see the module docstring).
+    centre : float
+        ``θ_m`` / ``U_m`` of a conic span (unused for ``"linear"``).
+    scale : float
+        ``tan(α/2)`` / ``tanh(β/2)`` of a conic span (unused for ``"linear"``).
+    approximate : bool
+        True when the piece comes from an OCCT approximation.
+    error : float
+        The approximation error OCCT reports (model units); 0 for exact pieces.
+
+    Examples
+    --------
+    >>> seg = Segment(RationalBezier([[0, 0, 0], [1, 0, 0]]), 2.0, 4.0)
+    >>> seg.edge_param(0.25), seg.segment_param(3.0)
+    (2.5, 0.5)
+    """
+
+    curve: RationalBezier
+    t0: float
+    t1: float
+    mapping: str = "linear"
+    centre: float = 0.0
+    scale: float = 1.0
+    approximate: bool = False
+    error: float = 0.0
+
+    @property
+    def t_range(self) -> tuple[float, float]:
+        """The edge-parameter range ``(t0, t1)`` the segment covers."""
+        return (self.t0, self.t1)
+
+    def edge_param(self, s: Any) -> Any:
+        """Map segment parameters ``s`` in ``[0, 1]`` to the edge's OCCT parameters (exactly).
+
+        Parameters
+        ----------
+        s : float or ndarray
+            Segment parameter(s); 0 and 1 map exactly to ``t0`` and ``t1``.
+
+        Returns
+        -------
+        float or ndarray
+            Edge parameter(s), same shape as ``s``.
+
+        Examples
+        --------
+        >>> Segment(RationalBezier([[0, 0, 0], [1, 0, 0]]), 0.0, 2.0).edge_param(1.0)
+        2.0
+        """
+        scalar = np.ndim(s) == 0
+        sa = np.asarray(s, dtype=np.float64)
+        if self.mapping == "linear":
+            t = self.t0 + sa * (self.t1 - self.t0)
+        elif self.mapping == "circular":
+            t = self.centre + 2.0 * np.arctan(self.scale * (2.0 * sa - 1.0))
+        else:
+            t = self.centre + 2.0 * np.arctanh(self.scale * (2.0 * sa - 1.0))
+        t = np.where(sa == 0.0, self.t0, np.where(sa == 1.0, self.t1, t))
+        return float(t) if scalar else t
+
+    def segment_param(self, t: Any) -> Any:
+        """Map edge parameters ``t`` in ``[t0, t1]`` to segment parameters (exact inverse).
+
+        Parameters
+        ----------
+        t : float or ndarray
+            Edge parameter(s).
+
+        Returns
+        -------
+        float or ndarray
+            Segment parameter(s) ``s``; ``t0`` and ``t1`` map exactly to 0 and 1.
+
+        Examples
+        --------
+        >>> Segment(RationalBezier([[0, 0, 0], [1, 0, 0]]), 0.0, 2.0).segment_param(2.0)
+        1.0
+        """
+        scalar = np.ndim(t) == 0
+        ta = np.asarray(t, dtype=np.float64)
+        if self.mapping == "linear":
+            s = (ta - self.t0) / (self.t1 - self.t0)
+        elif self.mapping == "circular":
+            s = 0.5 * (np.tan(0.5 * (ta - self.centre)) / self.scale + 1.0)
+        else:
+            s = 0.5 * (np.tanh(0.5 * (ta - self.centre)) / self.scale + 1.0)
+        s = np.where(ta == self.t0, 0.0, np.where(ta == self.t1, 1.0, s))
+        return float(s) if scalar else s
+
+
+def _make_curve(h: np.ndarray) -> RationalBezier:
+    """Build a curve from homogeneous rows OCCT guarantees finite with positive weights."""
+    trusted = getattr(RationalBezier, "_trusted", None)
+    if trusted is not None:
+        return trusted(h)  # type: ignore[no-any-return]
+    return RationalBezier.from_homogeneous(h)  # pragma: no cover
+
+
+# --------------------------------------------------------------------------- shapes in
+def unwrap(obj: Any) -> TopoDS_Shape:
+    """Return the raw ``TopoDS_Shape`` of a build123d / CadQuery shape (or the shape itself).
+
+    Lists and tuples of shapes become one compound; a CadQuery ``Workplane``
+    contributes the shapes on its stack.
+
+    Raises
+    ------
+    InputTypeError
+        If ``obj`` is not a shape (or a sequence of shapes), or is a null shape.
+
+    Examples
+    --------
+    >>> unwrap(42)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InputTypeError: expected a TopoDS_Shape, a build123d or CadQuery shape, ...
+    """
+    if isinstance(obj, TopoDS_Shape):
+        shape = obj
+    elif hasattr(obj, "wrapped") and isinstance(obj.wrapped, TopoDS_Shape):
+        shape = obj.wrapped
+    elif hasattr(obj, "vals") and callable(obj.vals) and type(obj).__name__ == "Workplane":
+        shape = make_compound([unwrap(v) for v in obj.vals() if hasattr(v, "wrapped")])
+    elif isinstance(obj, (list, tuple)):
+        shape = make_compound([unwrap(v) for v in obj])
+    else:
+        raise InputTypeError(
+            "expected a TopoDS_Shape, a build123d or CadQuery shape, or a list of them; "
+            f"received {type(obj).__name__}"
+        )
+    if shape.IsNull():
+        raise InputTypeError("expected a non-null shape; received a null TopoDS_Shape")
+    return shape
+
+
+def make_compound(shapes: Iterable[TopoDS_Shape]) -> TopoDS_Compound:
+    """Return a compound holding ``shapes`` (raw OCP shapes).
+
+    Examples
+    --------
+    >>> make_compound([]).NbChildren()
+    0
+    """
+    builder = BRep_Builder()
+    comp = TopoDS_Compound()
+    builder.MakeCompound(comp)
+    for s in shapes:
+        builder.Add(comp, s)
+    return comp
+
+
+def edges_of(shape: Any) -> list[TopoDS_Edge]:
+    """Return the unique edges of a shape, in ``TopExp_Explorer`` order.
+
+    Repeated occurrences of one edge (``IsSame``: same TShape and location,
+    any orientation, e.g. a seam or an edge shared by two faces) appear once, at
+    their first position. Degenerated edges (poles of spheres...) are kept; the
+    intersection functions skip them.
+
+    Parameters
+    ----------
+    shape : TopoDS_Shape or build123d / CadQuery shape
+        Any shape; an edge gives a one-element list.
+
+    Returns
+    -------
+    list of TopoDS_Edge
+
+    Examples
+    --------
+    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakePolygon
+    >>> poly = BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0), gp_Pnt(1, 1, 0), True)
+    >>> len(edges_of(poly.Wire())), len(edges_of(make_compound([])))
+    (3, 0)
+    """
+    raw = unwrap(shape)
+    if isinstance(raw, TopoDS_Edge):
+        return [raw]
+    emap = TopTools_IndexedMapOfShape()
+    TopExp.MapShapes_s(raw, TopAbs_EDGE, emap)
+    return [TopoDS.Edge_s(emap.FindKey(i)) for i in range(1, emap.Extent() + 1)]
+
+
+def edge_tolerance(edge: Any) -> float:
+    """Return OCCT's tolerance of an edge (``BRep_Tool.Tolerance``, model units).
+
+    Examples
+    --------
+    >>> edge_tolerance(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0)).Edge())
+    1e-07
+    """
+    return float(BRep_Tool.Tolerance_s(_as_edge(edge)))
+
+
+def _as_edge(edge: Any) -> TopoDS_Edge:
+    raw = edge if isinstance(edge, TopoDS_Shape) else getattr(edge, "wrapped", None)
+    if not isinstance(raw, TopoDS_Shape):
+        raise InputTypeError(
+            f"expected an edge (TopoDS_Edge or a build123d / CadQuery Edge); received {type(edge).__name__}"
+        )
+    if raw.IsNull():
+        raise InputTypeError("expected an edge; received a null shape")
+    if not isinstance(raw, TopoDS_Edge):
+        if raw.ShapeType() == TopAbs_EDGE:
+            return TopoDS.Edge_s(raw)
+        raise InputTypeError(
+            f"expected an edge; received a {raw.ShapeType().name.replace('TopAbs_', '').lower()} shape "
+            "(use edges_of() or the intersection functions for wires, faces and solids)"
+        )
+    return raw
+
+
+# --------------------------------------------------------------------------- conversion
+def _location_matrix(loc: TopLoc_Location) -> np.ndarray | None:
+    """Return the 3x4 matrix of a location (``None`` for the identity)."""
+    if loc.IsIdentity():
+        return None
+    trsf = loc.Transformation()
+    m = np.empty((3, 4))
+    for r in range(3):
+        for c in range(4):
+            m[r, c] = trsf.Value(r + 1, c + 1)
+    return m
+
+
+def _apply(h: np.ndarray, m: np.ndarray | None) -> np.ndarray:
+    """Apply a 3x4 affine matrix to homogeneous rows ``[w x, w y, w z, w]`` (in place if possible)."""
+    if m is not None:
+        h[..., :3] = h @ m.T
+    return h
+
+
+def _conic_frame(curve: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    pos = curve.Position()
+    return (
+        np.array(pos.Location().Coord()),
+        np.array(pos.XDirection().Coord()),
+        np.array(pos.YDirection().Coord()),
+    )
+
+
+def _elliptic_segments(
+    curve: Any, a: float, b: float, first: float, last: float, m: np.ndarray | None
+) -> list[Segment]:
+    """Rational quadratic spans of a circle / ellipse arc, each <= MAX_CONIC_SPAN."""
+    origin, xdir, ydir = _conic_frame(curve)
+    span = last - first
+    n = max(1, math.ceil(span / MAX_CONIC_SPAN - 1e-9))
+    theta = first + span * np.arange(n + 1) / n
+    theta[-1] = last
+    half = 0.5 * (theta[1:] - theta[:-1])
+    mid = theta[:-1] + half
+    cos_half = np.cos(half)
+    # local (x, y) of the three control points of every span, then weights
+    lx = np.empty((n, 3))
+    ly = np.empty((n, 3))
+    lx[:, 0] = a * np.cos(theta[:-1])
+    ly[:, 0] = b * np.sin(theta[:-1])
+    lx[:, 2] = a * np.cos(theta[1:])
+    ly[:, 2] = b * np.sin(theta[1:])
+    # middle control point times its weight cos(half): (a cos θm, b sin θm)
+    lx[:, 1] = a * np.cos(mid)
+    ly[:, 1] = b * np.sin(mid)
+    w = np.ones((n, 3))
+    w[:, 1] = cos_half
+    h = np.empty((n, 3, 4))
+    h[..., :3] = origin * w[..., None] + lx[..., None] * xdir + ly[..., None] * ydir
+    h[..., 3] = w
+    _apply(h, m)
+    scale = np.tan(0.5 * half)
+    return [
+        Segment(_make_curve(h[i]), float(theta[i]), float(theta[i + 1]), "circular", float(mid[i]),
+                float(scale[i]))
+        for i in range(n)
+    ]
+
+
+def _hyperbola_segments(curve: Any, first: float, last: float, m: np.ndarray | None) -> list[Segment]:
+    origin, xdir, ydir = _conic_frame(curve)
+    a = curve.MajorRadius()
+    b = curve.MinorRadius()
+    span = last - first
+    n = max(1, math.ceil(span / MAX_HYPERBOLA_SPAN - 1e-9))
+    u = first + span * np.arange(n + 1) / n
+    u[-1] = last
+    half = 0.5 * (u[1:] - u[:-1])
+    mid = u[:-1] + half
+    lx = np.empty((n, 3))
+    ly = np.empty((n, 3))
+    lx[:, 0] = a * np.cosh(u[:-1])
+    ly[:, 0] = b * np.sinh(u[:-1])
+    lx[:, 2] = a * np.cosh(u[1:])
+    ly[:, 2] = b * np.sinh(u[1:])
+    lx[:, 1] = a * np.cosh(mid)
+    ly[:, 1] = b * np.sinh(mid)
+    w = np.ones((n, 3))
+    w[:, 1] = np.cosh(half)
+    h = np.empty((n, 3, 4))
+    h[..., :3] = origin * w[..., None] + lx[..., None] * xdir + ly[..., None] * ydir
+    h[..., 3] = w
+    _apply(h, m)
+    scale = np.tanh(0.5 * half)
+    return [
+        Segment(_make_curve(h[i]), float(u[i]), float(u[i + 1]), "hyperbolic", float(mid[i]),
+                float(scale[i]))
+        for i in range(n)
+    ]
+
+
+def _parabola_segment(curve: Any, first: float, last: float, m: np.ndarray | None) -> list[Segment]:
+    origin, xdir, ydir = _conic_frame(curve)
+    f4 = 4.0 * curve.Focal()
+    half = 0.5 * (last - first)
+    # P(U) = O + U^2/(4F) X + U Y; middle control point P(U0) + (U1 - U0)/2 P'(U0)
+    lx = np.array([first * first / f4, first * last / f4, last * last / f4])
+    ly = np.array([first, first + half, last])
+    h = np.empty((3, 4))
+    h[:, :3] = origin + lx[:, None] * xdir + ly[:, None] * ydir
+    h[:, 3] = 1.0
+    _apply(h, m)
+    return [Segment(_make_curve(h), first, last)]
+
+
+def _line_segment(curve: Any, first: float, last: float, m: np.ndarray | None) -> list[Segment]:
+    lin = curve.Lin()
+    o = np.array(lin.Location().Coord())
+    d = np.array(lin.Direction().Coord())
+    h = np.empty((2, 4))
+    h[0, :3] = o + first * d
+    h[1, :3] = o + last * d
+    h[:, 3] = 1.0
+    _apply(h, m)
+    return [Segment(_make_curve(h), first, last)]
+
+
+def _bezier_rows(bez: Any) -> np.ndarray:
+    """Homogeneous rows of a Geom_BezierCurve (1-based OCCT access)."""
+    n = bez.NbPoles()
+    h = np.empty((n, 4))
+    for i in range(n):
+        h[i, :3] = bez.Pole(i + 1).Coord()
+    if bez.IsRational():
+        for i in range(n):
+            h[i, 3] = bez.Weight(i + 1)
+        h[:, :3] *= h[:, 3:]
+    else:
+        h[:, 3] = 1.0
+    return h
+
+
+def _bezier_segment(curve: Any, first: float, last: float, m: np.ndarray | None) -> list[Segment]:
+    h = _apply(_bezier_rows(curve), m)
+    whole = _make_curve(h)
+    if first != 0.0 or last != 1.0:
+        whole = whole.segment(first, last)
+    return [Segment(whole, first, last)]
+
+
+def _bspline_segments(curve: Any, first: float, last: float, m: np.ndarray | None) -> list[Segment]:
+    try:
+        conv = GeomConvert_BSplineCurveToBezierCurve(curve, first, last, 1e-12)
+    except Exception as exc:  # noqa: BLE001 - OCCT raises Standard_Failure subclasses
+        raise OcctError(f"GeomConvert_BSplineCurveToBezierCurve failed on [{first}, {last}]: {exc}") from exc
+    n = conv.NbArcs()
+    knots = TColStd_Array1OfReal(1, n + 1)
+    conv.Knots(knots)
+    ks = [knots.Value(i) for i in range(1, n + 2)]
+    ks[0] = first
+    ks[-1] = last
+    out = []
+    for i in range(n):
+        if ks[i + 1] <= ks[i]:
+            continue
+        h = _apply(_bezier_rows(conv.Arc(i + 1)), m)
+        out.append(Segment(_make_curve(h), ks[i], ks[i + 1]))
+    return out
+
+
+def _approx_segments(
+    curve_or_adaptor: Any, first: float, last: float, m: np.ndarray | None, tol: float
+) -> list[Segment]:
+    """Approximate any curve by a B-spline with OCCT, keeping its parameterisation."""
+    try:
+        approx = GeomConvert_ApproxCurve(curve_or_adaptor, tol, GeomAbs_Shape.GeomAbs_C2, 1000, 14)
+    except Exception as exc:  # noqa: BLE001
+        raise OcctError(f"GeomConvert_ApproxCurve failed: {exc}") from exc
+    if not approx.HasResult():
+        raise UnsupportedCurveError(
+            f"OCCT could not approximate this curve within {tol} (no result); it cannot be converted"
+        )
+    err = float(approx.MaxError())
+    segs = _bspline_segments(approx.Curve(), first, last, m)
+    return [Segment(s.curve, s.t0, s.t1, approximate=True, error=err) for s in segs]
+
+
+def edge_segments(
+    edge: Any, *, approximate: bool = True, approximation_tolerance: float = APPROXIMATION_TOLERANCE
+) -> list[Segment]:
+    """Convert an edge to rational Bézier segments with exact parameter maps.
+
+    Parameters
+    ----------
+    edge : TopoDS_Edge or build123d / CadQuery Edge
+        The edge; its location is applied, its orientation ignored (parameters
+        stay the edge's own).
+    approximate : bool, keyword-only
+        Allow OCCT approximation for curve types without an exact conversion
+        (offset curves, curves on surfaces, other curves); the segments are then
+        flagged ``approximate=True``. If False such edges raise
+        :class:`UnsupportedCurveError`.
+    approximation_tolerance : float, keyword-only
+        The 3D tolerance asked of the approximation (model units).
+
+    Returns
+    -------
+    list of Segment
+        In increasing edge parameter, covering the edge's range without gaps.
+
+    Raises
+    ------
+    InputTypeError
+        If ``edge`` is not an edge.
+    DegenerateCurveError
+        If the edge is degenerated or has zero length.
+    UnsupportedCurveError
+        If the curve needs approximation and ``approximate`` is False (or fails).
+
+    Examples
+    --------
+    >>> from OCP.GC import GC_MakeArcOfCircle
+    >>> arc = GC_MakeArcOfCircle(gp_Pnt(1, 0, 0), gp_Pnt(0, 1, 0), gp_Pnt(-1, 0, 0)).Value()
+    >>> segs = edge_segments(BRepBuilderAPI_MakeEdge(arc).Edge())
+    >>> len(segs), segs[0].curve.degree, round(segs[-1].t1, 12)
+    (2, 2, 3.14159265359)
+    >>> edge_segments(make_compound([]))
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InputTypeError: expected an edge; received a compound shape ...
+    """
+    e = _as_edge(edge)
+    if BRep_Tool.Degenerated_s(e):
+        raise DegenerateCurveError("expected an edge with a curve; received a degenerated edge (a point)")
+    loc = TopLoc_Location()
+    curve = BRep_Tool.Curve_s(e, loc, 0.0, 0.0)
+    first, last = BRep_Tool.Range_s(e)
+    if not (math.isfinite(first) and math.isfinite(last)):
+        raise InvalidInputError(f"expected a bounded edge; received the parameter range [{first}, {last}]")
+    if not last > first:
+        raise DegenerateCurveError(
+            f"expected an edge with a parameter range t0 < t1; received [{first}, {last}] (zero length)"
+        )
+    m = _location_matrix(loc)
+    if curve is None or (hasattr(curve, "IsNull") and curve.IsNull()):
+        # only a curve on a surface: approximate the 3D curve from the adaptor
+        if not approximate:
+            raise UnsupportedCurveError("the edge has no 3D curve (only a curve on a surface)")
+        return _check_length(_approx_segments(BRepAdaptor_Curve(e), first, last, None,
+                                              approximation_tolerance))
+    return _check_length(
+        _curve_segments(curve, first, last, m, approximate, approximation_tolerance)
+    )
+
+
+def _curve_segments(
+    curve: Any, first: float, last: float, m: np.ndarray | None, approximate: bool, tol: float
+) -> list[Segment]:
+    while isinstance(curve, Geom_TrimmedCurve):
+        curve = curve.BasisCurve()
+    if isinstance(curve, Geom_Line):
+        return _line_segment(curve, first, last, m)
+    if isinstance(curve, Geom_Circle):
+        r = curve.Radius()
+        return _elliptic_segments(curve, r, r, first, last, m)
+    if isinstance(curve, Geom_Ellipse):
+        return _elliptic_segments(curve, curve.MajorRadius(), curve.MinorRadius(), first, last, m)
+    if isinstance(curve, Geom_BSplineCurve):
+        return _bspline_segments(curve, first, last, m)
+    if isinstance(curve, Geom_BezierCurve):
+        return _bezier_segment(curve, first, last, m)
+    if isinstance(curve, Geom_Parabola):
+        return _parabola_segment(curve, first, last, m)
+    if isinstance(curve, Geom_Hyperbola):
+        return _hyperbola_segments(curve, first, last, m)
+    name = type(curve).__name__
+    if not approximate:
+        raise UnsupportedCurveError(
+            f"expected a line, conic, Bézier or B-spline curve for exact conversion; received {name} "
+            "(pass approximate=True to convert it by OCCT approximation)"
+        )
+    return _approx_segments(curve, first, last, m, tol)
+
+
+def _check_length(segs: list[Segment]) -> list[Segment]:
+    pts = np.vstack([s.curve.control_points for s in segs])
+    spread = float(np.max(pts.max(axis=0) - pts.min(axis=0)))
+    if not spread > 0.0:
+        raise DegenerateCurveError(
+            "expected an edge of non-zero length; received one whose every control point is "
+            f"{pts[0].tolist()}"
+        )
+    return segs
+
+
+def edge_value(edge: Any, t: float) -> tuple[float, float, float]:
+    """Return the point of an edge at its own parameter ``t`` (``BRepAdaptor_Curve``, global coordinates).
+
+    Examples
+    --------
+    >>> edge_value(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(2, 0, 0)).Edge(), 0.5)
+    (0.5, 0.0, 0.0)
+    """
+    return BRepAdaptor_Curve(_as_edge(edge)).Value(float(t)).Coord()  # type: ignore[no-any-return]
+
+
+# --------------------------------------------------------------------------- planar frame
+def planar_frame(points: np.ndarray, tol: float) -> np.ndarray | None:
+    """Return a 2x4 affine map to a plane containing ``points`` (rows), or None if not coplanar.
+
+    The rows of the result are ``(u, -u·o)`` and ``(v, -v·o)`` for an orthonormal
+    in-plane basis ``u, v`` and a point ``o`` of the plane, so ``M @ (x, y, z, 1)``
+    gives 2D coordinates. The map is affine and isometric, so curve parameters
+    and distances are unchanged. Points count as coplanar when every one lies
+    within ``tol`` of the plane.
+
+    Examples
+    --------
+    >>> frame = planar_frame(np.array([[0, 0, 1.0], [1, 0, 1], [0, 1, 1]]), 1e-12)
+    >>> (frame @ [1.0, 2.0, 1.0, 1.0]).tolist()
+    [1.0, 2.0]
+    >>> planar_frame(np.array([[0, 0, 0.0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]), 1e-12) is None
+    True
+    """
+    pts = np.asarray(points, dtype=np.float64)
+    z = pts[:, 2]
+    if float(z.max() - z.min()) <= tol:
+        # parallel to XY (the common sketch case): drop z, keeping x and y bit-exact
+        return np.array([[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0]])
+    o = pts.mean(axis=0)
+    _, sv, vt = np.linalg.svd(pts - o, full_matrices=True)
+    normal = vt[2]
+    if float(np.max(np.abs((pts - o) @ normal))) > tol:
+        return None
+    u, v = vt[0], vt[1]
+    frame = np.empty((2, 4))
+    frame[0, :3] = u
+    frame[1, :3] = v
+    frame[0, 3] = -float(u @ o)
+    frame[1, 3] = -float(v @ o)
+    return frame
+
+
+# --------------------------------------------------------------------------- shapes out
+def make_vertex(point: Sequence[float]) -> TopoDS_Vertex:
+    """Return a ``TopoDS_Vertex`` at ``point`` (x, y, z).
+
+    Examples
+    --------
+    >>> BRep_Tool.Pnt_s(make_vertex((1.0, 2.0, 3.0))).Coord()
+    (1.0, 2.0, 3.0)
+    """
+    x, y, z = (float(c) for c in point)
+    return BRepBuilderAPI_MakeVertex(gp_Pnt(x, y, z)).Vertex()
+
+
+def trim_edge(edge: Any, t0: float, t1: float) -> TopoDS_Edge:
+    """Return the part of ``edge`` over the edge parameters ``[t0, t1]`` as a new edge.
+
+    The new edge lies on the same curve, keeps the edge's location and
+    orientation.
+
+    Raises
+    ------
+    DegenerateCurveError
+        If ``t0 == t1``.
+
+    Examples
+    --------
+    >>> e = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(4, 0, 0)).Edge()
+    >>> BRep_Tool.Range_s(trim_edge(e, 1.0, 3.0))
+    (1.0, 3.0)
+    """
+    e = _as_edge(edge)
+    lo, hi = (float(t0), float(t1)) if t0 <= t1 else (float(t1), float(t0))
+    if lo == hi:
+        raise DegenerateCurveError(f"expected t0 != t1 to trim an edge; received t0 = t1 = {lo}")
+    loc = TopLoc_Location()
+    curve = BRep_Tool.Curve_s(e, loc, 0.0, 0.0)
+    if curve is None:
+        raise UnsupportedCurveError("cannot trim an edge without a 3D curve")
+    maker = BRepBuilderAPI_MakeEdge(curve, lo, hi)
+    if not maker.IsDone():
+        raise OcctError(f"BRepBuilderAPI_MakeEdge failed on [{lo}, {hi}] (error {maker.Error()})")
+    new = maker.Edge()
+    if not loc.IsIdentity():
+        new = TopoDS.Edge_s(new.Located(loc))
+    return TopoDS.Edge_s(new.Oriented(e.Orientation()))
+
+
+def to_geom_bezier(curve: RationalBezier) -> Geom_BezierCurve:
+    """Return a ``Geom_BezierCurve`` (planar curves placed in z = 0).
+
+    Raises
+    ------
+    InvalidInputError
+        If the degree exceeds OCCT's limit of 25.
+
+    Examples
+    --------
+    >>> g = to_geom_bezier(RationalBezier([[0, 0], [1, 1], [2, 0]], [1, 2, 1]))
+    >>> g.NbPoles(), g.Weight(2), g.IsRational()
+    (3, 2.0, True)
+    """
+    _check_degree(curve)
+    pts = curve.control_points
+    arr = TColgp_Array1OfPnt(1, len(pts))
+    for i, p in enumerate(pts):
+        arr.SetValue(i + 1, gp_Pnt(float(p[0]), float(p[1]), float(p[2]) if curve.dim == 3 else 0.0))
+    if curve.is_polynomial:
+        return Geom_BezierCurve(arr)
+    return Geom_BezierCurve(arr, _weights_array(curve))
+
+
+def to_geom2d_bezier(curve: RationalBezier) -> Geom2d_BezierCurve:
+    """Return a ``Geom2d_BezierCurve`` of a planar curve.
+
+    Raises
+    ------
+    InvalidInputError
+        If the curve is not planar (dim 2) or its degree exceeds 25.
+
+    Examples
+    --------
+    >>> to_geom2d_bezier(RationalBezier([[0, 0], [1, 1]])).NbPoles()
+    2
+    """
+    if curve.dim != 2:
+        raise InvalidInputError(f"expected a planar curve (dim 2) for Geom2d; received dim {curve.dim}")
+    _check_degree(curve)
+    pts = curve.control_points
+    arr = TColgp_Array1OfPnt2d(1, len(pts))
+    for i, p in enumerate(pts):
+        arr.SetValue(i + 1, gp_Pnt2d(float(p[0]), float(p[1])))
+    if curve.is_polynomial:
+        return Geom2d_BezierCurve(arr)
+    return Geom2d_BezierCurve(arr, _weights_array(curve))
+
+
+def _check_degree(curve: RationalBezier) -> None:
+    if curve.degree > _MAX_BEZIER_DEGREE:
+        raise InvalidInputError(
+            f"OCCT Bézier curves have degree <= {_MAX_BEZIER_DEGREE}; received degree {curve.degree}"
+        )
+
+
+def _weights_array(curve: RationalBezier) -> TColStd_Array1OfReal:
+    w = TColStd_Array1OfReal(1, curve.degree + 1)
+    for i, wi in enumerate(curve.weights):
+        w.SetValue(i + 1, float(wi))
+    return w
+
+
+def from_geom_bezier(geom: Any) -> RationalBezier:
+    """Return the ``RationalBezier`` of a ``Geom_BezierCurve`` (dim 3) or ``Geom2d_BezierCurve`` (dim 2).
+
+    Raises
+    ------
+    InputTypeError
+        If ``geom`` is neither.
+
+    Examples
+    --------
+    >>> from_geom_bezier(to_geom2d_bezier(RationalBezier([[0, 0], [1, 1]]))).control_points.tolist()
+    [[0.0, 0.0], [1.0, 1.0]]
+    """
+    if isinstance(geom, Geom_BezierCurve):
+        return _make_curve(_bezier_rows(geom))
+    if isinstance(geom, Geom2d_BezierCurve):
+        n = geom.NbPoles()
+        h = np.empty((n, 3))
+        for i in range(n):
+            h[i, :2] = geom.Pole(i + 1).Coord()
+            h[i, 2] = geom.Weight(i + 1)
+        h[:, :2] *= h[:, 2:]
+        return _make_curve(h)
+    raise InputTypeError(
+        f"expected a Geom_BezierCurve or Geom2d_BezierCurve; received {type(geom).__name__}"
+    )
+
+
+def to_edge(curve: RationalBezier) -> TopoDS_Edge:
+    """Return a ``TopoDS_Edge`` on the curve (parameter range ``[0, 1]``; planar curves in z = 0).
+
+    Examples
+    --------
+    >>> e = to_edge(RationalBezier([[0, 0, 0], [3, 4, 0]]))
+    >>> edge_value(e, 1.0)
+    (3.0, 4.0, 0.0)
+    """
+    maker = BRepBuilderAPI_MakeEdge(to_geom_bezier(curve))
+    if not maker.IsDone():
+        raise OcctError(f"BRepBuilderAPI_MakeEdge failed on a Bézier curve (error {maker.Error()})")
+    return maker.Edge()
+

@@ -1,0 +1,428 @@
+"""Edge -> rational Bézier segment conversion, checked against OCCT's own evaluation.
+
+OCCT (``BRepAdaptor_Curve.Value``) is the independent oracle: for every segment and
+several ``s``, the segment point must equal the edge's point at ``edge_param(s)``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import build123d as bd
+import cadquery as cq
+import numpy as np
+import pytest
+from OCP.BRep import BRep_Builder, BRep_Tool
+from OCP.BRepAdaptor import BRepAdaptor_Curve
+from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+from OCP.Geom import (
+    Geom_BezierCurve,
+    Geom_BSplineCurve,
+    Geom_Circle,
+    Geom_Line,
+    Geom_OffsetCurve,
+    Geom_TrimmedCurve,
+)
+from OCP.gp import gp_Ax1, gp_Ax2, gp_Circ, gp_Dir, gp_Elips, gp_Hypr, gp_Parab, gp_Pnt, gp_Trsf, gp_Vec
+from OCP.TColgp import TColgp_Array1OfPnt
+from OCP.TColStd import TColStd_Array1OfInteger, TColStd_Array1OfReal
+from OCP.TopLoc import TopLoc_Location
+from OCP.TopoDS import TopoDS, TopoDS_Edge
+
+from relief_cad.cad import ocp
+from relief_cad.errors import (
+    DegenerateCurveError,
+    InputTypeError,
+    ReliefCadError,
+    UnsupportedCurveError,
+)
+
+# ----------------------------------------------------------------------------- frames
+FRAMES = {
+    "xy": gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1), gp_Dir(1, 0, 0)),
+    "tilted": gp_Ax2(gp_Pnt(1.5, -2.0, 3.25), gp_Dir(1, 1, 1), gp_Dir(1, -1, 0)),
+    "far": gp_Ax2(gp_Pnt(1000.0, 2000.0, -500.0), gp_Dir(0.2, -0.3, 0.9), gp_Dir(0, 0.9, 0.3)),
+}
+
+
+def _frame_pnt(ax: gp_Ax2, x: float, y: float, z: float = 0.0) -> gp_Pnt:
+    o, xd, yd, zd = ax.Location(), ax.XDirection(), ax.YDirection(), ax.Direction()
+    return gp_Pnt(
+        o.X() + x * xd.X() + y * yd.X() + z * zd.X(),
+        o.Y() + x * xd.Y() + y * yd.Y() + z * zd.Y(),
+        o.Z() + x * xd.Z() + y * yd.Z() + z * zd.Z(),
+    )
+
+
+def _poles(ax: gp_Ax2, pts: list[tuple[float, ...]]) -> TColgp_Array1OfPnt:
+    arr = TColgp_Array1OfPnt(1, len(pts))
+    for i, p in enumerate(pts):
+        arr.SetValue(i + 1, _frame_pnt(ax, *p))
+    return arr
+
+
+def _reals(vals: list[float]) -> TColStd_Array1OfReal:
+    arr = TColStd_Array1OfReal(1, len(vals))
+    for i, v in enumerate(vals):
+        arr.SetValue(i + 1, float(v))
+    return arr
+
+
+def _ints(vals: list[int]) -> TColStd_Array1OfInteger:
+    arr = TColStd_Array1OfInteger(1, len(vals))
+    for i, v in enumerate(vals):
+        arr.SetValue(i + 1, int(v))
+    return arr
+
+
+def _edge(maker: BRepBuilderAPI_MakeEdge) -> TopoDS_Edge:
+    assert maker.IsDone()
+    return maker.Edge()
+
+
+# ----------------------------------------------------------------------------- raw OCP curves
+def line(ax: gp_Ax2) -> TopoDS_Edge:
+    return _edge(BRepBuilderAPI_MakeEdge(_frame_pnt(ax, -1, 0.5), _frame_pnt(ax, 3, 2)))
+
+
+def line_trimmed(ax: gp_Ax2) -> TopoDS_Edge:
+    return _edge(BRepBuilderAPI_MakeEdge(Geom_Line(ax.Location(), ax.XDirection()), -2.5, 7.0))
+
+
+def circle_full(ax: gp_Ax2) -> TopoDS_Edge:
+    return _edge(BRepBuilderAPI_MakeEdge(gp_Circ(ax, 2.5)))
+
+
+def circle_arc(ax: gp_Ax2) -> TopoDS_Edge:
+    return _edge(BRepBuilderAPI_MakeEdge(gp_Circ(ax, 1.25), 0.3, 2.0))
+
+
+def circle_arc_over_seam(ax: gp_Ax2) -> TopoDS_Edge:
+    return _edge(BRepBuilderAPI_MakeEdge(gp_Circ(ax, 3.0), 5.0, 8.5))
+
+
+def ellipse_full(ax: gp_Ax2) -> TopoDS_Edge:
+    return _edge(BRepBuilderAPI_MakeEdge(gp_Elips(ax, 4.0, 1.5)))
+
+
+def ellipse_arc(ax: gp_Ax2) -> TopoDS_Edge:
+    return _edge(BRepBuilderAPI_MakeEdge(gp_Elips(ax, 4.0, 1.5), -1.0, 2.7))
+
+
+def parabola(ax: gp_Ax2) -> TopoDS_Edge:
+    return _edge(BRepBuilderAPI_MakeEdge(gp_Parab(ax, 0.75), -2.0, 3.0))
+
+
+def hyperbola(ax: gp_Ax2) -> TopoDS_Edge:
+    return _edge(BRepBuilderAPI_MakeEdge(gp_Hypr(ax, 2.0, 1.0), -1.5, 2.5))
+
+
+def bezier_poly(ax: gp_Ax2) -> TopoDS_Edge:
+    return _edge(BRepBuilderAPI_MakeEdge(Geom_BezierCurve(_poles(ax, [(0, 0), (1, 2), (3, -1), (4, 1)]))))
+
+
+def bezier_rational_trimmed(ax: gp_Ax2) -> TopoDS_Edge:
+    g = Geom_BezierCurve(_poles(ax, [(0, 0), (1, 2), (3, -1), (4, 1), (5, 0)]), _reals([1, 2, 0.5, 3, 1]))
+    return _edge(BRepBuilderAPI_MakeEdge(g, 0.2, 0.85))
+
+
+def bspline_multiplicities(ax: gp_Ax2) -> TopoDS_Edge:
+    pts = [(0, 0), (1, 2), (2, -1), (3, 2), (4, 0), (5, 1), (6, -1), (7, 0.5), (8, 0)]
+    knots = [0.0, 0.5, 1.25, 2.0, 3.0]
+    mults = [4, 1, 3, 1, 4]  # 13 = 9 poles + degree 3 + 1
+    g = Geom_BSplineCurve(_poles(ax, pts), _reals(knots), _ints(mults), 3)
+    return _edge(BRepBuilderAPI_MakeEdge(g, 0.2, 2.9))
+
+
+def bspline_c0_knot(ax: gp_Ax2) -> TopoDS_Edge:
+    pts = [(0, 0), (1, 2), (2, 2), (3, 0), (4, -2), (5, -1), (6, 0)]
+    g = Geom_BSplineCurve(_poles(ax, pts), _reals([0, 1, 2]), _ints([4, 3, 4]), 3)
+    return _edge(BRepBuilderAPI_MakeEdge(g))
+
+
+def bspline_rational(ax: gp_Ax2) -> TopoDS_Edge:
+    pts = [(0, 0), (1, 2), (2, -1), (3, 2), (4, 0), (5, 1)]
+    g = Geom_BSplineCurve(
+        _poles(ax, pts), _reals([1, 0.5, 2, 1.5, 0.7, 1]), _reals([0, 1, 2, 3]), _ints([3, 1, 2, 3]), 2
+    )
+    return _edge(BRepBuilderAPI_MakeEdge(g))
+
+
+def bspline_periodic(ax: gp_Ax2) -> TopoDS_Edge:
+    pts = [(2, 0), (1, 2), (-1, 2), (-2, 0), (-1, -2), (1, -2.5)]
+    g = Geom_BSplineCurve(_poles(ax, pts), _reals([0, 1, 2, 3, 4, 5, 6]), _ints([1] * 7), 3, True)
+    return _edge(BRepBuilderAPI_MakeEdge(g))
+
+
+def bspline_periodic_over_seam(ax: gp_Ax2) -> TopoDS_Edge:
+    pts = [(2, 0), (1, 2), (-1, 2), (-2, 0), (-1, -2), (1, -2.5)]
+    g = Geom_BSplineCurve(_poles(ax, pts), _reals([0, 1, 2, 3, 4, 5, 6]), _ints([1] * 7), 3, True)
+    return _edge(BRepBuilderAPI_MakeEdge(g, 4.5, 7.25))
+
+
+def bspline_space(ax: gp_Ax2) -> TopoDS_Edge:
+    pts = [(0, 0, 0), (1, 2, 1), (2, -1, -1), (3, 2, 2), (4, 0, -0.5), (5, 1, 1)]
+    g = Geom_BSplineCurve(_poles(ax, pts), _reals([0, 1, 2, 3]), _ints([4, 1, 1, 4]), 3)
+    return _edge(BRepBuilderAPI_MakeEdge(g))
+
+
+def trimmed_circle(ax: gp_Ax2) -> TopoDS_Edge:
+    return _edge(BRepBuilderAPI_MakeEdge(Geom_TrimmedCurve(Geom_Circle(ax, 2.0), 1.0, 4.0)))
+
+
+OCP_BUILDERS = [
+    line, line_trimmed, circle_full, circle_arc, circle_arc_over_seam, ellipse_full, ellipse_arc,
+    parabola, hyperbola, bezier_poly, bezier_rational_trimmed, bspline_multiplicities, bspline_c0_knot,
+    bspline_rational, bspline_periodic, bspline_periodic_over_seam, bspline_space, trimmed_circle,
+]
+
+
+def located(edge: TopoDS_Edge) -> TopoDS_Edge:
+    trsf = gp_Trsf()
+    trsf.SetRotation(gp_Ax1(gp_Pnt(1, 2, 3), gp_Dir(0.3, -0.4, 0.8)), 0.7)
+    move = gp_Trsf()
+    move.SetTranslation(gp_Vec(5.0, -3.0, 2.0))
+    return TopoDS.Edge_s(edge.Moved(TopLoc_Location(move.Multiplied(trsf))))
+
+
+def scaled(edge: TopoDS_Edge) -> TopoDS_Edge:
+    trsf = gp_Trsf()
+    trsf.SetScale(gp_Pnt(1, 1, 1), 2.5)
+    return TopoDS.Edge_s(edge.Located(TopLoc_Location(trsf)))
+
+
+VARIANTS = {
+    "plain": lambda e: e,
+    "reversed": lambda e: TopoDS.Edge_s(e.Reversed()),
+    "located": located,
+    "located_reversed": lambda e: TopoDS.Edge_s(located(e).Reversed()),
+    "scaled": scaled,
+}
+
+
+# ----------------------------------------------------------------------------- build123d / CadQuery
+def _b3d_edges() -> dict[str, bd.Edge]:
+    tilted = bd.Plane(origin=(1, 2, 3), z_dir=(1, 1, 1), x_dir=(1, -1, 0))
+    return {
+        "b3d_line": bd.Edge.make_line((0, 0, 0), (3, 4, 5)),
+        "b3d_circle": bd.Edge.make_circle(2.0, plane=tilted),
+        "b3d_arc": bd.Edge.make_circle(2.0, plane=tilted, start_angle=20, end_angle=250),
+        "b3d_three_point_arc": bd.Edge.make_three_point_arc((0, 0, 0), (1, 1, 0), (2, 0, 0)),
+        "b3d_ellipse": bd.Edge.make_ellipse(3.0, 1.0, plane=tilted, start_angle=-30, end_angle=200),
+        "b3d_spline": bd.Edge.make_spline([(0, 0, 0), (1, 2, 0), (3, 1, 0), (4, 3, 1), (5, 0, 0)]),
+        "b3d_spline_periodic": bd.Edge.make_spline(
+            [(0, 0, 0), (2, 1, 0), (1, 3, 0), (-1, 2, 0)], periodic=True
+        ),
+        "b3d_bezier": bd.Edge.make_bezier((0, 0, 0), (1, 2, 1), (3, 1, -1), (4, 0, 0), weights=[1, 2, 3, 1]),
+        "b3d_moved_arc": bd.Edge.make_circle(1.0, start_angle=0, end_angle=120).moved(
+            bd.Location((1, 2, 3), (10, 20, 30))
+        ),
+        "b3d_line_in_sketch": _sketch_line(),
+    }
+
+
+def _sketch_line() -> bd.Edge:
+    with bd.BuildLine(bd.Plane.XZ) as bl:
+        bd.Line((0, 0), (2, 1))
+    return bl.edges()[0]
+
+
+def _cq_edges() -> dict[str, cq.Edge]:
+    return {
+        "cq_line": cq.Edge.makeLine(cq.Vector(0, 0, 0), cq.Vector(1, 2, 3)),
+        "cq_circle": cq.Edge.makeCircle(1.5, cq.Vector(1, 1, 1), cq.Vector(0, 1, 1), 10, 300),
+        "cq_ellipse": cq.Edge.makeEllipse(3, 1, cq.Vector(0, 0, 0), cq.Vector(1, 0, 1), cq.Vector(0, 1, 0)),
+        "cq_spline": cq.Edge.makeSpline([cq.Vector(0, 0, 0), cq.Vector(1, 1, 0), cq.Vector(2, 0, 1)]),
+        "cq_spline_periodic": cq.Edge.makeSpline(
+            [cq.Vector(0, 0, 0), cq.Vector(2, 1, 0), cq.Vector(1, 3, 0)], periodic=True
+        ),
+        "cq_bezier": cq.Edge.makeBezier([cq.Vector(0, 0, 0), cq.Vector(1, 2, 0), cq.Vector(3, 0, 0)]),
+        "cq_workplane_arc": cq.Workplane("YZ").threePointArc((1, 1), (2, 0)).val(),
+    }
+
+
+NATIVE = {**_b3d_edges(), **_cq_edges()}
+
+
+# ----------------------------------------------------------------------------- round trips
+S_VALUES = np.array([0.0, 1e-9, 0.1, 0.25, 1 / 3, 0.5, 0.77, 0.999, 1.0])
+
+
+def check_round_trip(edge: object) -> list[ocp.Segment]:
+    segs = ocp.edge_segments(edge)
+    raw = edge if isinstance(edge, TopoDS_Edge) else edge.wrapped  # type: ignore[attr-defined]
+    adaptor = BRepAdaptor_Curve(raw)
+    first, last = adaptor.FirstParameter(), adaptor.LastParameter()
+    # segments tile the edge's own range, in order, without gaps
+    assert segs[0].t0 == first and segs[-1].t1 == last
+    for a, b in zip(segs, segs[1:]):
+        assert a.t1 == b.t0
+        assert a.t0 < a.t1
+    size = max(1.0, float(np.max(np.abs(np.vstack([s.curve.control_points for s in segs])))))
+    for seg in segs:
+        assert not seg.approximate
+        ts = seg.edge_param(S_VALUES)
+        assert np.all(np.diff(ts) >= 0)
+        pts = seg.curve.evaluate(S_VALUES)
+        for t, p in zip(ts, pts):
+            occt = np.array(adaptor.Value(float(t)).Coord())
+            assert np.max(np.abs(occt - p)) <= 1e-12 * size, (t, occt, p)
+        # the inverse map undoes the forward one
+        np.testing.assert_allclose(seg.segment_param(ts), S_VALUES, rtol=0, atol=1e-13)
+        assert seg.segment_param(seg.t0) == 0.0 and seg.segment_param(seg.t1) == 1.0
+    return segs
+
+
+@pytest.mark.parametrize("variant", list(VARIANTS))
+@pytest.mark.parametrize("frame", list(FRAMES))
+@pytest.mark.parametrize("builder", OCP_BUILDERS, ids=lambda f: f.__name__)
+def test_ocp_round_trip(builder, frame, variant):
+    check_round_trip(VARIANTS[variant](builder(FRAMES[frame])))
+
+
+@pytest.mark.parametrize("name", list(NATIVE))
+def test_native_round_trip(name):
+    check_round_trip(NATIVE[name])
+
+
+@pytest.mark.parametrize(
+    ("builder", "degree", "rational"),
+    [
+        (line, 1, False), (circle_arc, 2, True), (ellipse_full, 2, True), (parabola, 2, False),
+        (hyperbola, 2, True), (bezier_poly, 3, False), (bspline_multiplicities, 3, False),
+    ],
+    ids=lambda v: getattr(v, "__name__", str(v)),
+)
+def test_segment_kind(builder, degree, rational):
+    segs = ocp.edge_segments(builder(FRAMES["xy"]))
+    assert all(s.curve.degree == degree for s in segs)
+    assert all((not s.curve.is_polynomial) == rational for s in segs)
+
+
+def test_span_counts():
+    # a full circle: four 90 degree spans; knots of multiplicity 2 and 3 still split cleanly
+    assert len(ocp.edge_segments(circle_full(FRAMES["xy"]))) == 4
+    assert len(ocp.edge_segments(circle_arc(FRAMES["xy"]))) == 2
+    segs = ocp.edge_segments(bspline_multiplicities(FRAMES["xy"]))
+    assert [s.t0 for s in segs] == [0.2, 0.5, 1.25, 2.0]
+    periodic = ocp.edge_segments(bspline_periodic_over_seam(FRAMES["xy"]))
+    assert periodic[0].t0 == 4.5 and periodic[-1].t1 == 7.25
+
+
+def test_circle_closed_form():
+    # the arc's segments are the standard quarter arcs: |P(s) - C| = r for all s, weight cos(45 deg)
+    segs = ocp.edge_segments(circle_full(FRAMES["xy"]))
+    s = np.linspace(0, 1, 101)
+    for seg in segs:
+        assert np.allclose(np.hypot(*seg.curve.evaluate(s)[:, :2].T), 2.5, rtol=0, atol=1e-14)
+        assert math.isclose(seg.curve.weights[1], math.sqrt(0.5), rel_tol=1e-15)
+        # the map is the tan-half-angle relation, checked at the midpoint and a quarter
+        assert math.isclose(seg.edge_param(0.5), 0.5 * (seg.t0 + seg.t1), rel_tol=1e-15)
+        expected = 0.5 * (seg.t0 + seg.t1) - 2 * math.atan(0.5 * math.tan(math.pi / 8))
+        assert math.isclose(seg.edge_param(0.25), expected, rel_tol=1e-15)
+
+
+# ----------------------------------------------------------------------------- approximate / bad input
+def test_offset_curve_is_approximated_and_flagged():
+    base = Geom_Circle(FRAMES["xy"], 2.0)
+    off = Geom_OffsetCurve(Geom_TrimmedCurve(base, 0.0, 2.0), 0.5, gp_Dir(0, 0, 1))
+    edge = _edge(BRepBuilderAPI_MakeEdge(off))
+    segs = ocp.edge_segments(edge)
+    assert segs and all(s.approximate for s in segs)
+    assert all(s.error <= ocp.APPROXIMATION_TOLERANCE for s in segs)
+    adaptor = BRepAdaptor_Curve(edge)
+    for seg in segs:
+        for s in (0.0, 0.3, 1.0):
+            occt = np.array(adaptor.Value(seg.edge_param(s)).Coord())
+            assert np.linalg.norm(occt - seg.curve.evaluate(s)) <= 1e-6
+    with pytest.raises(UnsupportedCurveError, match="OffsetCurve"):
+        ocp.edge_segments(edge, approximate=False)
+
+
+def test_edge_without_3d_curve_is_approximated():
+    # a helix from build123d lives on a cylinder: its edges carry curves on the surface
+    helix = bd.Helix(pitch=1.0, height=2.0, radius=1.0)
+    for edge in helix.edges():
+        segs = ocp.edge_segments(edge)
+        adaptor = BRepAdaptor_Curve(edge.wrapped)
+        for seg in segs:
+            for s in (0.0, 0.5, 1.0):
+                occt = np.array(adaptor.Value(seg.edge_param(s)).Coord())
+                assert np.linalg.norm(occt - seg.curve.evaluate(s)) <= 1e-5
+
+
+def _zero_length_edge() -> TopoDS_Edge:
+    builder = BRep_Builder()
+    edge = TopoDS_Edge()
+    builder.MakeEdge(edge, Geom_Line(gp_Pnt(1, 1, 1), gp_Dir(1, 0, 0)), 1e-7)
+    builder.Range(edge, 2.0, 2.0)
+    return edge
+
+
+def _degenerated_edge() -> TopoDS_Edge:
+    builder = BRep_Builder()
+    edge = TopoDS_Edge()
+    builder.MakeEdge(edge)
+    builder.Degenerated(edge, True)
+    return edge
+
+
+@pytest.mark.parametrize(
+    ("make", "error", "match"),
+    [
+        (_zero_length_edge, DegenerateCurveError, "zero length"),
+        (_degenerated_edge, DegenerateCurveError, "degenerated"),
+        (lambda: bd.Solid.make_box(1, 1, 1).wrapped, InputTypeError, "received a solid"),
+        (lambda: bd.Face.make_rect(1, 1), InputTypeError, "received a face"),
+        (lambda: bd.Vertex(1, 2, 3), InputTypeError, "received a vertex"),
+        (lambda: ocp.make_compound([]), InputTypeError, "received a compound"),
+        (lambda: "edge", InputTypeError, "received str"),
+        (lambda: TopoDS_Edge(), InputTypeError, "null"),
+    ],
+)
+def test_bad_input(make, error, match):
+    with pytest.raises(error, match=match) as info:
+        ocp.edge_segments(make())
+    assert isinstance(info.value, ReliefCadError)
+
+
+# ----------------------------------------------------------------------------- other conversions
+def test_edges_of_unique_and_ordered():
+    box = bd.Box(1, 2, 3)
+    edges = ocp.edges_of(box)
+    assert len(edges) == 12
+    assert len(ocp.edges_of(box.wrapped)) == 12
+    assert all(not a.IsSame(b) for i, a in enumerate(edges) for b in edges[i + 1 :])
+    # a cylinder's seam edge appears twice in its face but once here
+    assert len(ocp.edges_of(bd.Cylinder(1, 2))) == 3
+    assert ocp.edges_of(bd.Edge.make_line((0, 0), (1, 1)))[0].IsSame(
+        ocp.edges_of(bd.Edge.make_line((0, 0), (1, 1)))[0]
+    ) is False
+
+
+def test_geom_bezier_round_trip():
+    from relief_cad.curves import RationalBezier
+
+    curve = RationalBezier([[0, 0, 1], [1, 2, 0], [3, -1, 2], [4, 0, 0]], [1.0, 0.5, 2.0, 1.0])
+    back = ocp.from_geom_bezier(ocp.to_geom_bezier(curve))
+    np.testing.assert_array_equal(back.control_points, curve.control_points)
+    np.testing.assert_array_equal(back.weights, curve.weights)
+    planar = RationalBezier([[0, 0], [1, 2], [3, -1]], [1.0, 3.0, 1.0])
+    back2 = ocp.from_geom_bezier(ocp.to_geom2d_bezier(planar))
+    assert back2.dim == 2
+    np.testing.assert_array_equal(back2.homogeneous, planar.homogeneous)
+    edge = ocp.to_edge(curve)
+    [seg] = ocp.edge_segments(edge)
+    np.testing.assert_allclose(seg.curve.homogeneous, curve.homogeneous, rtol=1e-15)
+    with pytest.raises(InputTypeError):
+        ocp.from_geom_bezier(Geom_Line(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)))
+
+
+def test_trim_edge_keeps_location_and_curve():
+    edge = located(circle_arc(FRAMES["tilted"]))
+    piece = ocp.trim_edge(edge, 0.5, 1.5)
+    assert BRep_Tool.Range_s(piece) == (0.5, 1.5)
+    for t in (0.5, 1.0, 1.5):
+        np.testing.assert_allclose(ocp.edge_value(piece, t), ocp.edge_value(edge, t), atol=1e-14)
+    with pytest.raises(DegenerateCurveError):
+        ocp.trim_edge(edge, 1.0, 1.0)
