@@ -368,69 +368,51 @@ def _conic_frame(curve: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     )
 
 
-def _elliptic_segments(
-    curve: Any, a: float, b: float, first: float, last: float, m: np.ndarray | None
+def _quadratic_spans(
+    curve: Any,
+    first: float,
+    last: float,
+    m: np.ndarray | None,
+    hyperbolic: bool,
 ) -> list[Segment]:
-    """Rational quadratic spans of a circle / ellipse arc, each <= MAX_CONIC_SPAN."""
+    """Rational quadratic spans of an ellipse (circle) or hyperbola arc, in closed form.
+
+    Ellipse: ``P(θ) = O + a cos θ X + b sin θ Y``; a span of half-angle ``α`` around
+    ``θm`` has weights ``1, cos α, 1`` and middle point ``O + (a cos θm X + b sin θm Y) / cos α``.
+    Hyperbola: the same with ``cosh`` / ``sinh``.
+    """
     origin, xdir, ydir = _conic_frame(curve)
+    fx: Any
+    fy: Any
+    fs: Any
+    if hyperbolic:
+        a, b = curve.MajorRadius(), curve.MinorRadius()
+        fx, fy, fs = np.cosh, np.sinh, np.tanh
+        max_span, mapping = MAX_HYPERBOLA_SPAN, "hyperbolic"
+    else:
+        if isinstance(curve, Geom_Circle):
+            a = b = curve.Radius()
+        else:
+            a, b = curve.MajorRadius(), curve.MinorRadius()
+        fx, fy, fs = np.cos, np.sin, np.tan
+        max_span, mapping = MAX_CONIC_SPAN, "circular"
     span = last - first
-    n = max(1, math.ceil(span / MAX_CONIC_SPAN - 1e-9))
-    theta = first + span * np.arange(n + 1) / n
-    theta[-1] = last
-    half = 0.5 * (theta[1:] - theta[:-1])
-    mid = theta[:-1] + half
-    cos_half = np.cos(half)
-    # local (x, y) of the three control points of every span, then weights
-    lx = np.empty((n, 3))
-    ly = np.empty((n, 3))
-    lx[:, 0] = a * np.cos(theta[:-1])
-    ly[:, 0] = b * np.sin(theta[:-1])
-    lx[:, 2] = a * np.cos(theta[1:])
-    ly[:, 2] = b * np.sin(theta[1:])
-    # middle control point times its weight cos(half): (a cos θm, b sin θm)
-    lx[:, 1] = a * np.cos(mid)
-    ly[:, 1] = b * np.sin(mid)
+    n = max(1, math.ceil(span / max_span - 1e-9))
+    knots = first + span * np.arange(n + 1) / n
+    knots[-1] = last
+    half = 0.5 * (knots[1:] - knots[:-1])
+    mid = knots[:-1] + half
+    # angles of the three control points of every span; the middle one is stored times its weight
+    ang = np.stack([knots[:-1], mid, knots[1:]], axis=1)
     w = np.ones((n, 3))
-    w[:, 1] = cos_half
+    w[:, 1] = fx(half)  # cos(half) / cosh(half)
     h = np.empty((n, 3, 4))
-    h[..., :3] = origin * w[..., None] + lx[..., None] * xdir + ly[..., None] * ydir
+    h[..., :3] = origin * w[..., None] + (a * fx(ang))[..., None] * xdir + (b * fy(ang))[..., None] * ydir
     h[..., 3] = w
     _apply(h, m)
-    scale = np.tan(0.5 * half)
+    scale = fs(0.5 * half)
     return [
-        Segment(_make_curve(h[i]), float(theta[i]), float(theta[i + 1]), "circular", float(mid[i]),
-                float(scale[i]))
-        for i in range(n)
-    ]
-
-
-def _hyperbola_segments(curve: Any, first: float, last: float, m: np.ndarray | None) -> list[Segment]:
-    origin, xdir, ydir = _conic_frame(curve)
-    a = curve.MajorRadius()
-    b = curve.MinorRadius()
-    span = last - first
-    n = max(1, math.ceil(span / MAX_HYPERBOLA_SPAN - 1e-9))
-    u = first + span * np.arange(n + 1) / n
-    u[-1] = last
-    half = 0.5 * (u[1:] - u[:-1])
-    mid = u[:-1] + half
-    lx = np.empty((n, 3))
-    ly = np.empty((n, 3))
-    lx[:, 0] = a * np.cosh(u[:-1])
-    ly[:, 0] = b * np.sinh(u[:-1])
-    lx[:, 2] = a * np.cosh(u[1:])
-    ly[:, 2] = b * np.sinh(u[1:])
-    lx[:, 1] = a * np.cosh(mid)
-    ly[:, 1] = b * np.sinh(mid)
-    w = np.ones((n, 3))
-    w[:, 1] = np.cosh(half)
-    h = np.empty((n, 3, 4))
-    h[..., :3] = origin * w[..., None] + lx[..., None] * xdir + ly[..., None] * ydir
-    h[..., 3] = w
-    _apply(h, m)
-    scale = np.tanh(0.5 * half)
-    return [
-        Segment(_make_curve(h[i]), float(u[i]), float(u[i + 1]), "hyperbolic", float(mid[i]),
+        Segment(_make_curve(h[i]), float(knots[i]), float(knots[i + 1]), mapping, float(mid[i]),
                 float(scale[i]))
         for i in range(n)
     ]
@@ -597,11 +579,8 @@ def _curve_segments(
         curve = curve.BasisCurve()
     if isinstance(curve, Geom_Line):
         return _line_segment(curve, first, last, m)
-    if isinstance(curve, Geom_Circle):
-        r = curve.Radius()
-        return _elliptic_segments(curve, r, r, first, last, m)
-    if isinstance(curve, Geom_Ellipse):
-        return _elliptic_segments(curve, curve.MajorRadius(), curve.MinorRadius(), first, last, m)
+    if isinstance(curve, (Geom_Circle, Geom_Ellipse)):
+        return _quadratic_spans(curve, first, last, m, hyperbolic=False)
     if isinstance(curve, Geom_BSplineCurve):
         return _bspline_segments(curve, first, last, m)
     if isinstance(curve, Geom_BezierCurve):
@@ -609,7 +588,7 @@ def _curve_segments(
     if isinstance(curve, Geom_Parabola):
         return _parabola_segment(curve, first, last, m)
     if isinstance(curve, Geom_Hyperbola):
-        return _hyperbola_segments(curve, first, last, m)
+        return _quadratic_spans(curve, first, last, m, hyperbolic=True)
     name = type(curve).__name__
     if not approximate:
         raise UnsupportedCurveError(

@@ -255,7 +255,7 @@ def check_round_trip(edge: object) -> list[ocp.Segment]:
     first, last = adaptor.FirstParameter(), adaptor.LastParameter()
     # segments tile the edge's own range, in order, without gaps
     assert segs[0].t0 == first and segs[-1].t1 == last
-    for a, b in zip(segs, segs[1:]):
+    for a, b in zip(segs, segs[1:], strict=False):
         assert a.t1 == b.t0
         assert a.t0 < a.t1
     size = max(1.0, float(np.max(np.abs(np.vstack([s.curve.control_points for s in segs])))))
@@ -264,7 +264,7 @@ def check_round_trip(edge: object) -> list[ocp.Segment]:
         ts = seg.edge_param(S_VALUES)
         assert np.all(np.diff(ts) >= 0)
         pts = seg.curve.evaluate(S_VALUES)
-        for t, p in zip(ts, pts):
+        for t, p in zip(ts, pts, strict=True):
             occt = np.array(adaptor.Value(float(t)).Coord())
             assert np.max(np.abs(occt - p)) <= 1e-12 * size, (t, occt, p)
         # the inverse map undoes the forward one
