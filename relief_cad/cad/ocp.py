@@ -359,12 +359,21 @@ def _apply(h: np.ndarray, m: np.ndarray | None) -> np.ndarray:
     return h
 
 
-def _conic_frame(curve: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _conic_frame(curve: Any) -> tuple[tuple[float, float, float], ...]:
     pos = curve.Position()
-    return (
-        np.array(pos.Location().Coord()),
-        np.array(pos.XDirection().Coord()),
-        np.array(pos.YDirection().Coord()),
+    return pos.Location().Coord(), pos.XDirection().Coord(), pos.YDirection().Coord()
+
+
+def _rows(
+    frame: tuple[tuple[float, float, float], ...], coords: list[tuple[float, float, float]]
+) -> np.ndarray:
+    """Homogeneous rows ``[w (O + x X + y Y), w]`` from local ``(x w, y w, w)`` triples."""
+    (ox, oy, oz), (xx, xy, xz), (yx, yy, yz) = frame
+    return np.array(
+        [
+            (ox * w + x * xx + y * yx, oy * w + x * xy + y * yy, oz * w + x * xz + y * yz, w)
+            for x, y, w in coords
+        ]
     )
 
 
@@ -381,82 +390,75 @@ def _quadratic_spans(
     ``θm`` has weights ``1, cos α, 1`` and middle point ``O + (a cos θm X + b sin θm Y) / cos α``.
     Hyperbola: the same with ``cosh`` / ``sinh``.
     """
-    origin, xdir, ydir = _conic_frame(curve)
+    frame = _conic_frame(curve)
     fx: Any
     fy: Any
     fs: Any
     if hyperbolic:
         a, b = curve.MajorRadius(), curve.MinorRadius()
-        fx, fy, fs = np.cosh, np.sinh, np.tanh
+        fx, fy, fs = math.cosh, math.sinh, math.tanh
         max_span, mapping = MAX_HYPERBOLA_SPAN, "hyperbolic"
     else:
         if isinstance(curve, Geom_Circle):
             a = b = curve.Radius()
         else:
             a, b = curve.MajorRadius(), curve.MinorRadius()
-        fx, fy, fs = np.cos, np.sin, np.tan
+        fx, fy, fs = math.cos, math.sin, math.tan
         max_span, mapping = MAX_CONIC_SPAN, "circular"
+    if not (a > 0.0 and b > 0.0):
+        raise DegenerateCurveError(f"expected a conic with radii > 0; received radii {a} and {b}")
     span = last - first
     n = max(1, math.ceil(span / max_span - 1e-9))
-    knots = first + span * np.arange(n + 1) / n
-    knots[-1] = last
-    half = 0.5 * (knots[1:] - knots[:-1])
-    mid = knots[:-1] + half
-    # angles of the three control points of every span; the middle one is stored times its weight
-    ang = np.stack([knots[:-1], mid, knots[1:]], axis=1)
-    w = np.ones((n, 3))
-    w[:, 1] = fx(half)  # cos(half) / cosh(half)
-    h = np.empty((n, 3, 4))
-    h[..., :3] = origin * w[..., None] + (a * fx(ang))[..., None] * xdir + (b * fy(ang))[..., None] * ydir
-    h[..., 3] = w
-    _apply(h, m)
-    scale = fs(0.5 * half)
-    return [
-        Segment(_make_curve(h[i]), float(knots[i]), float(knots[i + 1]), mapping, float(mid[i]),
-                float(scale[i]))
-        for i in range(n)
-    ]
+    knots = [first + span * i / n for i in range(n)] + [last]
+    out = []
+    # the middle control point is stored times its weight cos(half) / cosh(half)
+    x0, y0 = a * fx(first), b * fy(first)
+    for i in range(n):
+        k0, k1 = knots[i], knots[i + 1]
+        half = 0.5 * (k1 - k0)
+        mid = k0 + half
+        x1, y1 = a * fx(k1), b * fy(k1)
+        h = _apply(_rows(frame, [(x0, y0, 1.0), (a * fx(mid), b * fy(mid), fx(half)), (x1, y1, 1.0)]), m)
+        out.append(Segment(_make_curve(h), k0, k1, mapping, mid, fs(0.5 * half)))
+        x0, y0 = x1, y1
+    return out
 
 
 def _parabola_segment(curve: Any, first: float, last: float, m: np.ndarray | None) -> list[Segment]:
-    origin, xdir, ydir = _conic_frame(curve)
     f4 = 4.0 * curve.Focal()
-    half = 0.5 * (last - first)
     # P(U) = O + U^2/(4F) X + U Y; middle control point P(U0) + (U1 - U0)/2 P'(U0)
-    lx = np.array([first * first / f4, first * last / f4, last * last / f4])
-    ly = np.array([first, first + half, last])
-    h = np.empty((3, 4))
-    h[:, :3] = origin + lx[:, None] * xdir + ly[:, None] * ydir
-    h[:, 3] = 1.0
-    _apply(h, m)
-    return [Segment(_make_curve(h), first, last)]
+    coords = [
+        (first * first / f4, first, 1.0),
+        (first * last / f4, 0.5 * (first + last), 1.0),
+        (last * last / f4, last, 1.0),
+    ]
+    return [Segment(_make_curve(_apply(_rows(_conic_frame(curve), coords), m)), first, last)]
 
 
 def _line_segment(curve: Any, first: float, last: float, m: np.ndarray | None) -> list[Segment]:
     lin = curve.Lin()
-    o = np.array(lin.Location().Coord())
-    d = np.array(lin.Direction().Coord())
-    h = np.empty((2, 4))
-    h[0, :3] = o + first * d
-    h[1, :3] = o + last * d
-    h[:, 3] = 1.0
-    _apply(h, m)
-    return [Segment(_make_curve(h), first, last)]
+    ox, oy, oz = lin.Location().Coord()
+    dx, dy, dz = lin.Direction().Coord()
+    h = np.array(
+        [
+            (ox + first * dx, oy + first * dy, oz + first * dz, 1.0),
+            (ox + last * dx, oy + last * dy, oz + last * dz, 1.0),
+        ]
+    )
+    return [Segment(_make_curve(_apply(h, m)), first, last)]
 
 
 def _bezier_rows(bez: Any) -> np.ndarray:
     """Homogeneous rows of a Geom_BezierCurve (1-based OCCT access)."""
     n = bez.NbPoles()
-    h = np.empty((n, 4))
-    for i in range(n):
-        h[i, :3] = bez.Pole(i + 1).Coord()
     if bez.IsRational():
-        for i in range(n):
-            h[i, 3] = bez.Weight(i + 1)
-        h[:, :3] *= h[:, 3:]
-    else:
-        h[:, 3] = 1.0
-    return h
+        rows = []
+        for i in range(1, n + 1):
+            x, y, z = bez.Pole(i).Coord()
+            w = bez.Weight(i)
+            rows.append((x * w, y * w, z * w, w))
+        return np.array(rows)
+    return np.array([(*bez.Pole(i).Coord(), 1.0) for i in range(1, n + 1)])
 
 
 def _bezier_segment(curve: Any, first: float, last: float, m: np.ndarray | None) -> list[Segment]:
@@ -567,9 +569,7 @@ def edge_segments(
             raise UnsupportedCurveError("the edge has no 3D curve (only a curve on a surface)")
         return _check_length(_approx_segments(BRepAdaptor_Curve(e), first, last, None,
                                               approximation_tolerance))
-    return _check_length(
-        _curve_segments(curve, first, last, m, approximate, approximation_tolerance)
-    )
+    return _curve_segments(curve, first, last, m, approximate, approximation_tolerance)
 
 
 def _curve_segments(
@@ -582,9 +582,9 @@ def _curve_segments(
     if isinstance(curve, (Geom_Circle, Geom_Ellipse)):
         return _quadratic_spans(curve, first, last, m, hyperbolic=False)
     if isinstance(curve, Geom_BSplineCurve):
-        return _bspline_segments(curve, first, last, m)
+        return _check_length(_bspline_segments(curve, first, last, m))
     if isinstance(curve, Geom_BezierCurve):
-        return _bezier_segment(curve, first, last, m)
+        return _check_length(_bezier_segment(curve, first, last, m))
     if isinstance(curve, Geom_Parabola):
         return _parabola_segment(curve, first, last, m)
     if isinstance(curve, Geom_Hyperbola):
@@ -599,9 +599,9 @@ def _curve_segments(
 
 
 def _check_length(segs: list[Segment]) -> list[Segment]:
-    pts = np.vstack([s.curve.control_points for s in segs])
-    spread = float(np.max(pts.max(axis=0) - pts.min(axis=0)))
-    if not spread > 0.0:
+    """Refuse free-form edges whose control points all coincide (lines and conics cannot)."""
+    pts = np.vstack([s.curve.control_points for s in segs]) if len(segs) > 1 else segs[0].curve.control_points
+    if not (pts != pts[0]).any():
         raise DegenerateCurveError(
             "expected an edge of non-zero length; received one whose every control point is "
             f"{pts[0].tolist()}"
