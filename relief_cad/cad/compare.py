@@ -1,0 +1,1280 @@
+"""Cross-check relief_cad against OCCT on the same edges, with an exact arbiter.
+
+:func:`compare` runs :func:`relief_cad.cad.intersections` and
+:func:`relief_cad.cad.occt.occt_intersections` with one tolerance, matches their results
+(points within the tolerance, overlaps whose parameter ranges meet), and sends every
+disagreement to an arbiter that decides who is right.
+
+The arbiter works in high precision (mpmath, 50 digits) on the exact data of the edges'
+curves: OCCT's own definition of each curve (poles, weights and knots of Bézier and
+B-spline curves, axis placements and radii of lines and conics, the edge location's
+matrix), each binary64 number taken exactly. Every parameter is therefore the edge's own
+parameter, and the arbiter shares no conversion code with either contender. A point
+candidate is refined by Gauss-Newton on ``a(t) - b(u) = 0`` (which converges to the local
+minimum of the distance for a near miss) and judged by its true distance against ``tol``;
+an overlap claim is checked by sampling the claimed range of ``a`` and finding the closest
+point of ``b`` to each sample in high precision. Curve types without exact data (offset
+curves...) are evaluated by OCCT in binary64 and the verdict says so.
+
+>>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+>>> from OCP.gp import gp_Pnt
+>>> a = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(2, 2, 0)).Edge()
+>>> b = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 2, 0), gp_Pnt(2, 0, 0)).Edge()
+>>> v = arbitrate_point(a, b, 1.4, 1.4, tol=1e-7)
+>>> v.holds, v.kind, round(v.t, 12), v.distance < 1e-40
+(True, 'crossing', 1.414213562373, True)
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+import io
+import math
+import time
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+import numpy as np
+
+from ..errors import InvalidInputError
+from .occt import default_occt_tolerance, occt_intersections, unique_edges
+from .results import EdgeIntersection, EdgeOverlap, EdgeResult
+
+__all__ = [
+    "ARBITER_DIGITS",
+    "Comparison",
+    "Disagreement",
+    "ExactCurve",
+    "Match",
+    "OverlapCheck",
+    "PointCheck",
+    "Verdict",
+    "arbitrate_overlap",
+    "arbitrate_point",
+    "compare",
+]
+
+ARBITER_DIGITS = 50
+"""Decimal digits of the arbiter's arithmetic."""
+
+Side = Literal["relief_cad", "occt"]
+
+
+def _mp() -> Any:
+    import mpmath
+
+    return mpmath.mp.clone() if hasattr(mpmath.mp, "clone") else mpmath.mp
+
+
+# --------------------------------------------------------------------------- exact curves
+
+
+class ExactCurve:
+    """An edge's 3D curve evaluated in high precision from OCCT's exact definition.
+
+    Parameters
+    ----------
+    edge : TopoDS_Edge, build123d Edge or CadQuery Edge
+        The edge; its location is applied, its own parameter is used.
+
+    Examples
+    --------
+    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+    >>> from OCP.gp import gp_Ax2, gp_Circ, gp_Dir, gp_Pnt
+    >>> circle = BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 2.0)).Edge()
+    >>> c = ExactCurve(circle)
+    >>> c.exact, [round(float(x), 12) + 0.0 for x in c.value(c.mp.pi / 2)]
+    (True, [0.0, 2.0, 0.0])
+    """
+
+    def __init__(self, edge: Any) -> None:
+        import mpmath
+        from OCP.BRep import BRep_Tool
+        from OCP.TopLoc import TopLoc_Location
+
+        self.mp = mpmath.mp
+        raw = getattr(edge, "wrapped", edge)
+        loc = TopLoc_Location()
+        curve = BRep_Tool.Curve_s(raw, loc, 0.0, 0.0)
+        self.first, self.last = (float(x) for x in BRep_Tool.Range_s(raw))
+        trsf = loc.Transformation()
+        self._matrix = [[self._f(trsf.Value(i, j)) for j in range(1, 5)] for i in range(1, 4)]
+        self._identity = loc.IsIdentity()
+        self._occt_curve = BRep_Tool.Curve_s(raw, 0.0, 0.0)
+        self.exact = True
+        self._eval = self._build(curve)
+        pts = [self._occt_curve.Value(float(t)) for t in np.linspace(self.first, self.last, 9)]
+        arr = np.array([[p.X(), p.Y(), p.Z()] for p in pts])
+        self.size = float(np.linalg.norm(arr.max(axis=0) - arr.min(axis=0))) or 1.0
+
+    def _f(self, x: float) -> Any:
+        return self.mp.mpf(float(x))
+
+    def _build(self, curve: Any) -> Any:
+        from OCP.Geom import (
+            Geom_BezierCurve,
+            Geom_BSplineCurve,
+            Geom_Circle,
+            Geom_Ellipse,
+            Geom_Hyperbola,
+            Geom_Line,
+            Geom_Parabola,
+            Geom_TrimmedCurve,
+        )
+
+        mp, f = self.mp, self._f
+        while isinstance(curve, Geom_TrimmedCurve):
+            curve = curve.BasisCurve()
+
+        def vec(v: Any) -> list[Any]:
+            return [f(v.X()), f(v.Y()), f(v.Z())]
+
+        if isinstance(curve, Geom_Line):
+            ax = curve.Position()
+            p, d = vec(ax.Location()), vec(ax.Direction())
+            return lambda t: [p[k] + t * d[k] for k in range(3)]  # noqa: B023
+        if isinstance(curve, (Geom_Circle, Geom_Ellipse, Geom_Hyperbola, Geom_Parabola)):
+            ax = curve.Position()
+            c, x, y = vec(ax.Location()), vec(ax.XDirection()), vec(ax.YDirection())
+            if isinstance(curve, Geom_Circle):
+                r = f(curve.Radius())
+                return lambda t: [c[k] + r * (mp.cos(t) * x[k] + mp.sin(t) * y[k]) for k in range(3)]
+            if isinstance(curve, Geom_Ellipse):
+                ra, rb = f(curve.MajorRadius()), f(curve.MinorRadius())
+                return lambda t: [c[k] + ra * mp.cos(t) * x[k] + rb * mp.sin(t) * y[k] for k in range(3)]
+            if isinstance(curve, Geom_Hyperbola):
+                ra, rb = f(curve.MajorRadius()), f(curve.MinorRadius())
+                return lambda t: [c[k] + ra * mp.cosh(t) * x[k] + rb * mp.sinh(t) * y[k] for k in range(3)]
+            foc = f(curve.Focal())
+            return lambda t: [c[k] + t * t / (4 * foc) * x[k] + t * y[k] for k in range(3)]
+        if isinstance(curve, Geom_BezierCurve):
+            n = curve.NbPoles()
+            hom = [[*vec(curve.Pole(i)), f(curve.Weight(i))] for i in range(1, n + 1)]
+            hom = [[h[0] * h[3], h[1] * h[3], h[2] * h[3], h[3]] for h in hom]
+
+            def bezier(t: Any) -> list[Any]:
+                pts = [list(h) for h in hom]
+                for r in range(1, n):
+                    for i in range(n - r):
+                        pts[i] = [(1 - t) * pts[i][k] + t * pts[i + 1][k] for k in range(4)]
+                w = pts[0][3]
+                return [pts[0][k] / w for k in range(3)]
+
+            return bezier
+        if isinstance(curve, Geom_BSplineCurve):
+            bs = curve
+            if bs.IsPeriodic():
+                bs = Geom_BSplineCurve.DownCast(bs.Copy())
+                bs.SetNotPeriodic()
+            p = bs.Degree()
+            knots = [f(bs.Knot(i)) for i in range(1, bs.NbKnots() + 1)]
+            flat: list[Any] = []
+            for i in range(1, bs.NbKnots() + 1):
+                flat.extend([knots[i - 1]] * bs.Multiplicity(i))
+            hom = [[*vec(bs.Pole(i)), f(bs.Weight(i))] for i in range(1, bs.NbPoles() + 1)]
+            hom = [[h[0] * h[3], h[1] * h[3], h[2] * h[3], h[3]] for h in hom]
+            # OCCT's flat knots have (poles + degree + 1) entries for non-periodic curves
+            lo_i, hi_i = p, len(hom) - 1
+
+            def bspline(t: Any) -> list[Any]:
+                span = lo_i
+                for s in range(lo_i, hi_i + 1):
+                    if flat[s] <= t:
+                        span = s
+                span = min(span, hi_i)
+                d = [list(hom[j + span - p]) for j in range(p + 1)]
+                for r in range(1, p + 1):
+                    for j in range(p, r - 1, -1):
+                        den = flat[j + 1 + span - r] - flat[j + span - p]
+                        alpha = (t - flat[j + span - p]) / den if den != 0 else mp.mpf(0)
+                        d[j] = [(1 - alpha) * d[j - 1][k] + alpha * d[j][k] for k in range(4)]
+                w = d[p][3]
+                return [d[p][k] / w for k in range(3)]
+
+            return bspline
+        # anything else: OCCT's binary64 evaluation (flagged)
+        self.exact = False
+        occ = curve
+
+        def fallback(t: Any) -> list[Any]:
+            q = occ.Value(float(t))
+            return [f(q.X()), f(q.Y()), f(q.Z())]
+
+        return fallback
+
+    def value(self, t: Any) -> list[Any]:
+        """Return the point at edge parameter ``t`` (global coordinates) as 3 mpf numbers."""
+        p: list[Any] = self._eval(self.mp.mpf(t))
+        if self._identity:
+            return p
+        m = self._matrix
+        return [m[i][0] * p[0] + m[i][1] * p[1] + m[i][2] * p[2] + m[i][3] for i in range(3)]
+
+    def derivative(self, t: Any) -> list[Any]:
+        """Return ``dP/dt`` at ``t`` (central difference at high precision)."""
+        mp = self.mp
+        h = mp.mpf(10) ** (-(mp.dps // 2 - 2)) * max(mp.mpf(1), abs(mp.mpf(self.last - self.first)))
+        t = mp.mpf(t)
+        lo, hi = max(t - h, mp.mpf(self.first) - h), t + h
+        p1, p0 = self.value(hi), self.value(lo)
+        return [(p1[k] - p0[k]) / (hi - lo) for k in range(3)]
+
+    def clamp(self, t: Any) -> Any:
+        """Clamp ``t`` into the edge's parameter range."""
+        return min(max(t, self.mp.mpf(self.first)), self.mp.mpf(self.last))
+
+
+# --------------------------------------------------------------------------- arbiter
+
+
+@dataclass(frozen=True)
+class PointCheck:
+    """The arbiter's finding near a point candidate.
+
+    Attributes
+    ----------
+    t, u : float
+        Refined edge parameters (local minimum of the distance, inside both ranges).
+    point : tuple of float
+        The refined common point (mean of ``a(t)`` and ``b(u)``).
+    distance : float
+        The true distance ``|a(t) - b(u)|`` there, computed with 50 digits.
+    sine : float
+        Sine of the angle between the two tangents (0 for a tangent contact).
+    kind : {"crossing", "tangent", "miss"}
+        ``"miss"`` when the distance exceeds the tolerance.
+    holds : bool
+        True when the refined distance is within the tolerance.
+    exact : bool
+        False when a curve had no exact data (evaluated by OCCT in binary64).
+    """
+
+    t: float
+    u: float
+    point: tuple[float, float, float]
+    distance: float
+    sine: float
+    kind: str
+    holds: bool
+    exact: bool = True
+
+
+@dataclass(frozen=True)
+class OverlapCheck:
+    """The arbiter's finding on an overlap claim ``a[t0, t1] == b[u0, u1]``.
+
+    Attributes
+    ----------
+    status : {"coincident", "within_tolerance", "tangent", "crossing", "none"}
+        ``"coincident"``: the curves coincide along the range up to rounding of their
+        data; ``"within_tolerance"``: they stay closer than ``tol`` without touching at
+        an isolated point (a genuine near-coincident stretch); ``"tangent"`` /
+        ``"crossing"``: the true answer in the range is isolated point(s) (the first one's
+        kind); ``"none"``: nothing within tolerance.
+    max_distance : float
+        The largest sampled distance from ``a`` to ``b`` over the range.
+    points : tuple of PointCheck
+        The isolated true points found in the range (for the non-overlap statuses).
+    """
+
+    status: str
+    max_distance: float
+    points: tuple[PointCheck, ...] = ()
+
+    @property
+    def holds(self) -> bool:
+        """True when the overlap claim is right (coincident or within tolerance)."""
+        return self.status in ("coincident", "within_tolerance")
+
+
+def _exact(edge: Any, cache: dict[int, ExactCurve] | None = None) -> ExactCurve:
+    if isinstance(edge, ExactCurve):
+        return edge
+    return ExactCurve(edge)
+
+
+def _refine(
+    ca: ExactCurve, cb: ExactCurve, t0: float, u0: float, *, same: bool = False
+) -> tuple[Any, Any, Any]:
+    """Gauss-Newton on a(t) - b(u) (a local minimum of the distance), clamped to the ranges."""
+    mp = ca.mp
+    t, u = ca.clamp(mp.mpf(t0)), cb.clamp(mp.mpf(u0))
+    eps = mp.mpf(10) ** (-(mp.dps - 5)) * max(ca.size, cb.size)
+    for _ in range(400):
+        pa, pb = ca.value(t), cb.value(u)
+        r = [pa[k] - pb[k] for k in range(3)]
+        if mp.sqrt(sum(x * x for x in r)) < eps:
+            break
+        da, db = ca.derivative(t), cb.derivative(u)
+        # normal equations of J = [da, -db]
+        a11 = sum(x * x for x in da)
+        a22 = sum(x * x for x in db)
+        a12 = -sum(da[k] * db[k] for k in range(3))
+        g1 = sum(da[k] * r[k] for k in range(3))
+        g2 = -sum(db[k] * r[k] for k in range(3))
+        det = a11 * a22 - a12 * a12
+        lam = (a11 + a22) * mp.mpf(10) ** (-(mp.dps - 10))
+        det = (a11 + lam) * (a22 + lam) - a12 * a12
+        if det == 0:
+            break
+        dt = -((a22 + lam) * g1 - a12 * g2) / det
+        du = -((a11 + lam) * g2 - a12 * g1) / det
+        nt, nu = ca.clamp(t + dt), cb.clamp(u + du)
+        # keep the step only if it does not increase the distance (damped otherwise)
+        step = mp.mpf(1)
+        cur = sum(x * x for x in r)
+        while True:
+            qa, qb = ca.value(nt), cb.value(nu)
+            new = sum((qa[k] - qb[k]) ** 2 for k in range(3))
+            if new <= cur or step < mp.mpf(2) ** -30:
+                break
+            step /= 2
+            nt, nu = ca.clamp(t + step * dt), cb.clamp(u + step * du)
+        if (
+            abs(nt - t) <= abs(t) * mp.mpf(10) ** (-(mp.dps - 3)) + eps
+            and abs(nu - u) <= abs(u) * mp.mpf(10) ** (-(mp.dps - 3)) + eps
+        ):
+            t, u = nt, nu
+            break
+        t, u = nt, nu
+    pa, pb = ca.value(t), cb.value(u)
+    dist = mp.sqrt(sum((pa[k] - pb[k]) ** 2 for k in range(3)))
+    return t, u, dist
+
+
+def _point_check(ca: ExactCurve, cb: ExactCurve, t: Any, u: Any, dist: Any, tol: float) -> PointCheck:
+    mp = ca.mp
+    pa, pb = ca.value(t), cb.value(u)
+    da, db = ca.derivative(t), cb.derivative(u)
+    cross = [da[1] * db[2] - da[2] * db[1], da[2] * db[0] - da[0] * db[2], da[0] * db[1] - da[1] * db[0]]
+    na, nb = mp.sqrt(sum(x * x for x in da)), mp.sqrt(sum(x * x for x in db))
+    sine = float(mp.sqrt(sum(x * x for x in cross)) / (na * nb)) if na * nb != 0 else 0.0
+    holds = float(dist) <= tol
+    # tangent: the curves stay within tol over a stretch much longer than tol (sine small)
+    tangent = sine < math.sqrt(tol / max(ca.size, cb.size, 1e-300)) * 1e-1 or sine < 1e-12
+    kind = ("tangent" if tangent else "crossing") if holds else "miss"
+    point = tuple(float((pa[k] + pb[k]) / 2) for k in range(3))
+    return PointCheck(float(t), float(u), point, float(dist), sine, kind, holds, ca.exact and cb.exact)  # type: ignore[arg-type]
+
+
+def arbitrate_point(
+    a: Any, b: Any, t: float, u: float, *, tol: float, digits: int = ARBITER_DIGITS
+) -> PointCheck:
+    """Refine a point candidate ``a(t) ~ b(u)`` in high precision and judge it against ``tol``.
+
+    Parameters
+    ----------
+    a, b : TopoDS_Edge, build123d Edge, CadQuery Edge or ExactCurve
+        The two edges (the same edge twice for a double point).
+    t, u : float
+        The candidate's edge parameters.
+    tol : float
+        The distance tolerance in model units.
+    digits : int
+        Decimal digits of the arithmetic.
+
+    Returns
+    -------
+    PointCheck
+        The refined parameters, true distance, tangent sine and verdict.
+
+    Examples
+    --------
+    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+    >>> from OCP.gp import gp_Pnt
+    >>> a = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0)).Edge()
+    >>> b = BRepBuilderAPI_MakeEdge(gp_Pnt(0.5, 1e-3, 0), gp_Pnt(0.5, 1, 0)).Edge()
+    >>> c = arbitrate_point(a, b, 0.5, 0.0, tol=1e-7)
+    >>> c.holds, c.kind, round(c.distance, 12)
+    (False, 'miss', 0.001)
+    """
+    import mpmath
+
+    with mpmath.workdps(digits):
+        ca, cb = _exact(a), _exact(b)
+        rt, ru, dist = _refine(ca, cb, t, u)
+        return _point_check(ca, cb, rt, ru, dist, tol)
+
+
+def _closest_u(ca: ExactCurve, cb: ExactCurve, t: Any, u0: Any) -> tuple[Any, Any]:
+    mp = ca.mp
+    pa = ca.value(t)
+    u = cb.clamp(mp.mpf(u0))
+    for _ in range(200):
+        pb, db = cb.value(u), cb.derivative(u)
+        r = [pa[k] - pb[k] for k in range(3)]
+        den = sum(x * x for x in db)
+        if den == 0:
+            break
+        du = sum(r[k] * db[k] for k in range(3)) / den
+        nu = cb.clamp(u + du)
+        if abs(nu - u) <= (abs(u) + 1) * mp.mpf(10) ** (-(mp.dps - 5)):
+            u = nu
+            break
+        u = nu
+    pb = cb.value(u)
+    return u, mp.sqrt(sum((pa[k] - pb[k]) ** 2 for k in range(3)))
+
+
+def arbitrate_overlap(
+    a: Any,
+    b: Any,
+    t: tuple[float, float],
+    u: tuple[float, float],
+    *,
+    tol: float,
+    samples: int = 33,
+    digits: int = ARBITER_DIGITS,
+) -> OverlapCheck:
+    """Check an overlap claim ``a[t0, t1] == b[u0, u1]`` by sampling both curves in high precision.
+
+    For ``samples`` parameters evenly spread over ``[t0, t1]`` the closest point of ``b``
+    is found by Newton's method in 50-digit arithmetic. The claim holds when every
+    distance is within ``tol``; it is then ``"coincident"`` when the distances are at the
+    rounding level of the data (``1e-3 tol`` or ``1e-13`` of the curves' size, the
+    larger), and otherwise ``"within_tolerance"`` unless the distance has an isolated
+    minimum far below the rest (a tangent contact that a tolerance stretched into a
+    segment: the verdict is then ``"tangent"``). A claim that fails is resolved into the
+    true isolated points in the range.
+
+    Parameters
+    ----------
+    a, b : TopoDS_Edge, build123d Edge, CadQuery Edge or ExactCurve
+        The two edges.
+    t, u : tuple of float
+        The claimed ranges, ``a(t[0]) = b(u[0])`` and ``a(t[1]) = b(u[1])``.
+    tol : float
+        The distance tolerance.
+    samples : int
+        Number of samples along ``[t0, t1]``.
+    digits : int
+        Decimal digits of the arithmetic.
+
+    Returns
+    -------
+    OverlapCheck
+
+    Examples
+    --------
+    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+    >>> from OCP.gp import gp_Pnt
+    >>> a = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(2, 0, 0)).Edge()
+    >>> b = BRepBuilderAPI_MakeEdge(gp_Pnt(1, 0, 0), gp_Pnt(3, 0, 0)).Edge()
+    >>> arbitrate_overlap(a, b, (1.0, 2.0), (0.0, 1.0), tol=1e-7).status
+    'coincident'
+    """
+    import mpmath
+
+    if samples < 3:
+        raise InvalidInputError(f"expected at least 3 samples, received {samples}")
+    with mpmath.workdps(digits):
+        ca, cb = _exact(a), _exact(b)
+        mp = ca.mp
+        t0, t1 = mp.mpf(t[0]), mp.mpf(t[1])
+        u0, u1 = mp.mpf(u[0]), mp.mpf(u[1])
+        ts = [t0 + (t1 - t0) * mp.mpf(i) / (samples - 1) for i in range(samples)]
+        dists, us = [], []
+        for i, ti in enumerate(ts):
+            ui, di = _closest_u(ca, cb, ti, u0 + (u1 - u0) * mp.mpf(i) / (samples - 1))
+            us.append(ui)
+            dists.append(di)
+        dmax = float(max(dists))
+        rounding = max(1e-3 * tol, 1e-13 * max(ca.size, cb.size))
+        if dmax <= rounding:
+            return OverlapCheck("coincident", dmax)
+        # isolated minima in the range
+        found: list[PointCheck] = []
+        for i in range(samples):
+            left = dists[i - 1] if i > 0 else mp.inf
+            right = dists[i + 1] if i < samples - 1 else mp.inf
+            if dists[i] <= left and dists[i] <= right:
+                rt, ru, dist = _refine(ca, cb, ts[i], us[i])
+                check = _point_check(ca, cb, rt, ru, dist, tol)
+                if check.holds and not any(abs(check.t - f.t) <= 1e-9 * (1 + abs(f.t)) for f in found):
+                    found.append(check)
+        if dmax <= tol:
+            dmin = min(f.distance for f in found) if found else float(min(dists))
+            if found and dmin * 10 < dmax and (dmin <= rounding or dmin * 1e3 < tol):
+                return OverlapCheck("tangent", dmax, tuple(found))
+            return OverlapCheck("within_tolerance", dmax)
+        if not found:
+            return OverlapCheck("none", dmax)
+        return OverlapCheck(found[0].kind, dmax, tuple(found))
+
+
+# --------------------------------------------------------------------------- comparison
+
+
+@dataclass(frozen=True)
+class Match:
+    """A result both sides found.
+
+    Attributes
+    ----------
+    relief, occt : EdgeIntersection or EdgeOverlap
+        The two results.
+    distance : float
+        Distance between the two reported points (largest end distance for overlaps).
+    dt, du : float
+        Parameter differences (largest end difference for overlaps).
+    loose : bool
+        Matched only after the arbiter refined both to the same true point (tangent
+        contacts are located to about ``sqrt(tol)``; inaccurate answers).
+    relief_error, occt_error : float
+        Distance from each side's reported point to the arbiter's refined true point
+        (``nan`` when not computed; overlaps).
+    """
+
+    relief: EdgeResult
+    occt: EdgeResult
+    distance: float
+    dt: float
+    du: float
+    loose: bool = False
+    relief_error: float = math.nan
+    occt_error: float = math.nan
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """Who is right about one disagreement, and why.
+
+    Attributes
+    ----------
+    winner : {"relief_cad", "occt", "neither"}
+        The side whose answer matches the truth.
+    truth : str
+        What is really there: ``"crossing"``, ``"tangent"``, ``"overlap"``, ``"nothing"``
+        or ``"duplicate"``.
+    reason : str
+        One sentence for a human.
+    distance : float
+        True distance at the refined candidate (largest sampled distance for overlaps).
+    exact : bool
+        False when a curve had no exact data.
+    """
+
+    winner: str
+    truth: str
+    reason: str
+    distance: float
+    exact: bool = True
+
+
+@dataclass(frozen=True)
+class Disagreement:
+    """A result claimed by one side only (or an overlap/point conflict), with its verdict.
+
+    Attributes
+    ----------
+    claimant : {"relief_cad", "occt"}
+        The side that made the claim.
+    claim : EdgeIntersection or EdgeOverlap
+        The claim.
+    counter : tuple of results
+        What the other side reported instead in the same place (points inside a claimed
+        overlap, or the overlap containing a claimed point); empty when it reported
+        nothing.
+    verdict : Verdict
+        The arbiter's decision.
+    """
+
+    claimant: str
+    claim: EdgeResult
+    counter: tuple[EdgeResult, ...]
+    verdict: Verdict
+
+    @property
+    def index(self) -> tuple[int, int]:
+        """The edge pair ``(index_a, index_b)``."""
+        return (self.claim.index_a, self.claim.index_b)
+
+
+def _res_dict(r: EdgeResult) -> dict[str, Any]:
+    if isinstance(r, EdgeIntersection):
+        return {
+            "type": "point",
+            "index_a": r.index_a,
+            "index_b": r.index_b,
+            "t": r.t,
+            "u": r.u,
+            "point": list(map(float, r.point)),
+            "kind": r.kind,
+            "distance": r.distance,
+            "route": r.route,
+        }
+    return {
+        "type": "overlap",
+        "index_a": r.index_a,
+        "index_b": r.index_b,
+        "t": list(r.t),
+        "u": list(r.u),
+        "kind": "overlap",
+        "route": r.route,
+    }
+
+
+@dataclass
+class Comparison:
+    """relief_cad's answer and OCCT's on the same shapes, matched, with verdicts.
+
+    Attributes
+    ----------
+    tol : float
+        The tolerance both sides and the arbiter used.
+    relief, occt : list of results
+        The two answers as returned.
+    agreed : list of Match
+        Results both found.
+    disagreements : list of Disagreement
+        Every claim made by one side only, with the arbiter's verdict.
+    routes : list of str
+        The OCCT routes that answered (unique, in order).
+    times : dict
+        Wall times in seconds: ``relief_cad``, ``occt``, ``arbiter``.
+    errors : dict
+        Exceptions raised by a side (``{"relief_cad": "ValueError: ..."}``); that side's
+        answer is then empty and every claim of the other side is arbitrated.
+    """
+
+    tol: float
+    relief: list[EdgeResult]
+    occt: list[EdgeResult]
+    agreed: list[Match] = field(default_factory=list)
+    disagreements: list[Disagreement] = field(default_factory=list)
+    routes: list[str] = field(default_factory=list)
+    times: dict[str, float] = field(default_factory=dict)
+    errors: dict[str, str] = field(default_factory=dict)
+    edges_a: list[Any] = field(default_factory=list, repr=False)
+    edges_b: list[Any] = field(default_factory=list, repr=False)
+    plot: bool = False
+
+    @property
+    def only_relief(self) -> list[Disagreement]:
+        """Disagreements claimed by relief_cad."""
+        return [d for d in self.disagreements if d.claimant == "relief_cad"]
+
+    @property
+    def only_occt(self) -> list[Disagreement]:
+        """Disagreements claimed by OCCT."""
+        return [d for d in self.disagreements if d.claimant == "occt"]
+
+    @property
+    def agree(self) -> bool:
+        """True when the two answers match completely."""
+        return not self.disagreements and not self.errors
+
+    def score(self) -> dict[str, int]:
+        """Count verdicts: how often each side was right on a disagreement.
+
+        Returns
+        -------
+        dict
+            Keys ``agreed``, ``relief_cad_right``, ``occt_right``, ``neither`` and
+            ``relief_cad_inaccurate`` / ``occt_inaccurate`` (agreed points reported farther
+            than ``tol`` from the arbiter's true point).
+        """
+        s = {"agreed": len(self.agreed), "relief_cad_right": 0, "occt_right": 0, "neither": 0}
+        for d in self.disagreements:
+            key = {"relief_cad": "relief_cad_right", "occt": "occt_right"}.get(d.verdict.winner, "neither")
+            s[key] += 1
+        s["relief_cad_inaccurate"] = sum(1 for m in self.agreed if m.relief_error > self.tol)
+        s["occt_inaccurate"] = sum(1 for m in self.agreed if m.occt_error > self.tol)
+        return s
+
+    def to_dict(self) -> dict[str, Any]:
+        """Return a JSON-ready summary (no OCCT objects)."""
+        return {
+            "tol": self.tol,
+            "routes": self.routes,
+            "times": self.times,
+            "errors": self.errors,
+            "score": self.score(),
+            "relief": [_res_dict(r) for r in self.relief],
+            "occt": [_res_dict(r) for r in self.occt],
+            "agreed": [
+                {
+                    "relief": _res_dict(m.relief),
+                    "occt": _res_dict(m.occt),
+                    "distance": m.distance,
+                    "dt": m.dt,
+                    "du": m.du,
+                    "loose": m.loose,
+                    "relief_error": None if math.isnan(m.relief_error) else m.relief_error,
+                    "occt_error": None if math.isnan(m.occt_error) else m.occt_error,
+                }
+                for m in self.agreed
+            ],
+            "disagreements": [
+                {
+                    "claimant": d.claimant,
+                    "claim": _res_dict(d.claim),
+                    "counter": [_res_dict(c) for c in d.counter],
+                    "winner": d.verdict.winner,
+                    "truth": d.verdict.truth,
+                    "reason": d.verdict.reason,
+                    "distance": d.verdict.distance,
+                    "exact": d.verdict.exact,
+                }
+                for d in self.disagreements
+            ],
+        }
+
+    # ----- display
+
+    def _rows(self) -> list[tuple[str, str, str, str, str, str]]:
+        rows: list[tuple[str, str, str, str, str, str]] = []
+        for m in self.agreed:
+            r = m.relief
+            where = _where(r)
+            rows.append(
+                (
+                    "agreed",
+                    where,
+                    r.kind,
+                    f"{m.distance:.2e}",
+                    f"{max(m.dt, m.du):.2e}",
+                    ("matched after refinement; " if m.loose else "")
+                    + (
+                        f"error vs truth: relief_cad {m.relief_error:.1e}, OCCT {m.occt_error:.1e}"
+                        if not math.isnan(m.relief_error)
+                        else ""
+                    ),
+                )
+            )
+        for d in self.disagreements:
+            rows.append(
+                (
+                    f"only {d.claimant}",
+                    _where(d.claim),
+                    d.claim.kind,
+                    f"{d.verdict.distance:.2e}",
+                    "",
+                    f"{d.verdict.winner} right: {d.verdict.reason}"
+                    if d.verdict.winner != "neither"
+                    else f"neither: {d.verdict.reason}",
+                )
+            )
+        return rows
+
+    def __str__(self) -> str:
+        s = self.score()
+        head = (
+            f"Comparison: tol={self.tol:.3g}, OCCT route(s): {', '.join(self.routes) or '-'}; "
+            f"{s['agreed']} agreed, {len(self.disagreements)} disagreement(s) "
+            f"(relief_cad right {s['relief_cad_right']}, OCCT right {s['occt_right']}, "
+            f"neither {s['neither']})"
+        )
+        if self.errors:
+            head += "\n" + "\n".join(f"  error in {k}: {v}" for k, v in self.errors.items())
+        cols = ("status", "where (edges: params)", "kind", "dist", "dparam", "verdict")
+        rows = self._rows()
+        if not rows:
+            return head + "\n  (no intersections on either side)"
+        widths = [max(len(c), *(len(r[i]) for r in rows)) for i, c in enumerate(cols)]
+        widths[-1] = min(widths[-1], 90)
+        line = "  ".join(c.ljust(w) for c, w in zip(cols, widths, strict=False))
+        out = [head, line, "  ".join("-" * w for w in widths)]
+        out += ["  ".join(c[:w].ljust(w) for c, w in zip(r, widths, strict=False)) for r in rows]
+        return "\n".join(out)
+
+    def __repr__(self) -> str:
+        return str(self)
+
+    def _repr_html_(self) -> str:
+        return self.to_html(plot=self.plot)
+
+    def to_html(self, *, plot: bool = False) -> str:
+        """Return an HTML table (and an inline PNG plot of both answers when ``plot``).
+
+        Parameters
+        ----------
+        plot : bool
+            Embed a matplotlib picture of the curves and both answers (base64 PNG).
+
+        Returns
+        -------
+        str
+        """
+        s = self.score()
+        rows = "".join(
+            "<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>" for r in self._rows()
+        )
+        head = "".join(f"<th>{c}</th>" for c in ("status", "where", "kind", "dist", "dparam", "verdict"))
+        img = ""
+        if plot:
+            png = self.plot_png()
+            if png:
+                b64 = base64.b64encode(png).decode()
+                img = f'<img alt="curves and answers" src="data:image/png;base64,{b64}"/>'
+        err = "".join(
+            f"<p><b>error in {html.escape(k)}</b>: {html.escape(v)}</p>" for k, v in self.errors.items()
+        )
+        return (
+            f"<div><p><b>relief_cad vs OCCT</b> (tol {self.tol:.3g}; "
+            f"route {html.escape(', '.join(self.routes))}): "
+            f"{s['agreed']} agreed, {len(self.disagreements)} disagreement(s): relief_cad right "
+            f"{s['relief_cad_right']}, OCCT right {s['occt_right']}, neither {s['neither']}</p>{err}"
+            f"<table><thead><tr>{head}</tr></thead><tbody>{rows}</tbody></table>{img}</div>"
+        )
+
+    def plot_png(self, *, size: tuple[float, float] = (5.0, 4.0)) -> bytes:
+        """Draw the edges and both answers (relief_cad: circles, OCCT: crosses) as PNG bytes.
+
+        Returns
+        -------
+        bytes
+            PNG data (empty when matplotlib is missing).
+        """
+        return plot_pair_png(
+            self.edges_a,
+            self.edges_b,
+            self.relief,
+            self.occt,
+            [d.claim for d in self.disagreements],
+            size=size,
+        )
+
+
+def _where(r: EdgeResult) -> str:
+    if isinstance(r, EdgeIntersection):
+        return f"{r.index_a}/{r.index_b}: t={r.t:.10g} u={r.u:.10g}"
+    return f"{r.index_a}/{r.index_b}: t=[{r.t[0]:.6g},{r.t[1]:.6g}] u=[{r.u[0]:.6g},{r.u[1]:.6g}]"
+
+
+def _edge_polyline(edge: Any, n: int = 200) -> np.ndarray:
+    from OCP.BRepAdaptor import BRepAdaptor_Curve
+
+    c = BRepAdaptor_Curve(getattr(edge, "wrapped", edge))
+    ts = np.linspace(c.FirstParameter(), c.LastParameter(), n)
+    out: np.ndarray = np.array([[p.X(), p.Y(), p.Z()] for p in (c.Value(float(t)) for t in ts)])
+    return out
+
+
+def _edge_range_polyline(edge: Any, t0: float, t1: float, n: int = 60) -> np.ndarray:
+    from OCP.BRepAdaptor import BRepAdaptor_Curve
+
+    c = BRepAdaptor_Curve(getattr(edge, "wrapped", edge))
+    ts = np.linspace(t0, t1, n)
+    out: np.ndarray = np.array([[p.X(), p.Y(), p.Z()] for p in (c.Value(float(t)) for t in ts)])
+    return out
+
+
+def plot_pair_png(
+    edges_a: Sequence[Any],
+    edges_b: Sequence[Any],
+    relief: Sequence[EdgeResult],
+    occt: Sequence[EdgeResult],
+    highlight: Sequence[EdgeResult] = (),
+    *,
+    size: tuple[float, float] = (5.0, 4.0),
+    title: str = "",
+) -> bytes:
+    """Draw edges (projected on their best-fit plane) and both answers as PNG bytes.
+
+    Parameters
+    ----------
+    edges_a, edges_b : sequences of edges
+        The unique edges of both shapes.
+    relief, occt : sequences of results
+        relief_cad's answer (blue circles / thick blue) and OCCT's (red crosses / thin red).
+    highlight : sequence of results
+        Disagreements, ringed in orange.
+    size : tuple of float
+        Figure size in inches.
+    title : str
+        Figure title.
+
+    Returns
+    -------
+    bytes
+        The PNG file's bytes; empty when matplotlib is unavailable.
+    """
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:  # pragma: no cover - workbench extra not installed
+        return b""
+    polys = [_edge_polyline(e) for e in edges_a] + [_edge_polyline(e) for e in edges_b]
+    pts = np.vstack(polys) if polys else np.zeros((1, 3))
+    origin = pts.mean(axis=0)
+    _, _, vt = np.linalg.svd(pts - origin, full_matrices=True)
+    if abs(vt[2][2]) > 1 - 1e-9:
+        basis = np.array([[1.0, 0, 0], [0, 1.0, 0]])
+        origin = np.zeros(3)
+    else:
+        basis = vt[:2]
+
+    def proj(p: np.ndarray) -> np.ndarray:
+        q: np.ndarray = (np.atleast_2d(p) - origin) @ basis.T
+        return q
+
+    fig, ax = plt.subplots(figsize=size, dpi=80)
+    for k, poly in enumerate(polys):
+        q = proj(poly)
+        ax.plot(q[:, 0], q[:, 1], color="0.25" if k < len(edges_a) else "0.55", lw=1)
+    for res, color, marker, lw in ((relief, "tab:blue", "o", 5), (occt, "tab:red", "x", 2)):
+        for r in res:
+            if isinstance(r, EdgeIntersection):
+                q = proj(np.array(r.point))
+                ax.plot(
+                    q[:, 0],
+                    q[:, 1],
+                    marker=marker,
+                    color=color,
+                    ms=8 if marker == "o" else 9,
+                    mfc="none",
+                    mew=1.5,
+                )
+            else:
+                edge = edges_a[r.index_a] if r.index_a < len(edges_a) else None
+                if edge is not None:
+                    q = proj(_edge_range_polyline(edge, r.t[0], r.t[1]))
+                    ax.plot(q[:, 0], q[:, 1], color=color, lw=lw, alpha=0.6)
+    for r in highlight:
+        if isinstance(r, EdgeIntersection):
+            q = proj(np.array(r.point))
+        elif r.index_a < len(edges_a):
+            q = proj(_edge_range_polyline(edges_a[r.index_a], r.t[0], r.t[1], 3))[1:2]
+        else:
+            continue
+        ax.plot(q[:, 0], q[:, 1], marker="o", ms=18, mfc="none", color="orange", mew=2)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_title(title or "relief_cad (blue o) vs OCCT (red x); disagreements ringed", fontsize=8)
+    ax.tick_params(labelsize=7)
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", bbox_inches="tight")
+    plt.close(fig)
+    return buf.getvalue()
+
+
+# --------------------------------------------------------------------------- matching
+
+
+def _pt_dist(p: Sequence[float], q: Sequence[float]) -> float:
+    return math.dist(tuple(map(float, p)), tuple(map(float, q)))
+
+
+def _in_range(x: float, rng: tuple[float, float], pad: float) -> bool:
+    lo, hi = min(rng), max(rng)
+    return lo - pad <= x <= hi + pad
+
+
+def _match_side(
+    relief: list[EdgeResult],
+    occt: list[EdgeResult],
+    exacts_a: list[ExactCurve],
+    exacts_b: list[ExactCurve],
+    tol: float,
+    self_mode: bool,
+    refine_all: bool = True,
+) -> tuple[list[Match], list[Disagreement]]:
+    agreed: list[Match] = []
+    disagreements: list[Disagreement] = []
+    pairs = sorted({(r.index_a, r.index_b) for r in relief} | {(r.index_a, r.index_b) for r in occt})
+    for ia, ib in pairs:
+        ca, cb = exacts_a[ia], exacts_b[ib]
+        pad_a = 1e-9 * (ca.last - ca.first) + 1e-12
+        rel = [r for r in relief if (r.index_a, r.index_b) == (ia, ib)]
+        occ = [r for r in occt if (r.index_a, r.index_b) == (ia, ib)]
+        used_r: set[int] = set()
+        used_o: set[int] = set()
+        # 1. overlaps whose t-ranges meet
+        for i, r in enumerate(rel):
+            if not isinstance(r, EdgeOverlap):
+                continue
+            for j, o in enumerate(occ):
+                if j in used_o or not isinstance(o, EdgeOverlap):
+                    continue
+                if min(r.t[1], o.t[1]) >= max(r.t[0], o.t[0]) - pad_a:
+                    dt = max(abs(r.t[0] - o.t[0]), abs(r.t[1] - o.t[1]))
+                    du = max(abs(r.u[0] - o.u[0]), abs(r.u[1] - o.u[1]))
+                    pa = [float(x) for x in ca.value(r.t[0])], [float(x) for x in ca.value(r.t[1])]
+                    pb = [float(x) for x in ca.value(o.t[0])], [float(x) for x in ca.value(o.t[1])]
+                    dist = max(_pt_dist(pa[0], pb[0]), _pt_dist(pa[1], pb[1]))
+                    agreed.append(Match(r, o, dist, dt, du))
+                    used_r.add(i)
+                    used_o.add(j)
+                    break
+        # 2. points within tol
+        cand = []
+        for i, r in enumerate(rel):
+            if i in used_r or not isinstance(r, EdgeIntersection):
+                continue
+            for j, o in enumerate(occ):
+                if j in used_o or not isinstance(o, EdgeIntersection):
+                    continue
+                d = _pt_dist(r.point, o.point)
+                cand.append((d, i, j))
+        cand.sort()
+        refined: dict[tuple[str, int], PointCheck] = {}
+
+        def ref(
+            side: str,
+            k: int,
+            res: EdgeIntersection,
+            refined: dict[tuple[str, int], PointCheck] = refined,
+            ca: ExactCurve = ca,
+            cb: ExactCurve = cb,
+        ) -> PointCheck:
+            if (side, k) not in refined:
+                refined[(side, k)] = arbitrate_point(ca, cb, res.t, res.u, tol=tol)
+            return refined[(side, k)]
+
+        def errors(i: int, j: int, r: EdgeIntersection, o: EdgeIntersection) -> tuple[float, float]:
+            if not refine_all:
+                return math.nan, math.nan
+            pr, po = ref("r", i, r), ref("o", j, o)
+            truth = pr if pr.distance <= po.distance else po
+            return _pt_dist(r.point, truth.point), _pt_dist(o.point, truth.point)
+
+        for d, i, j in cand:
+            if i in used_r or j in used_o or d > tol:
+                continue
+            r, o = rel[i], occ[j]
+            assert isinstance(r, EdgeIntersection) and isinstance(o, EdgeIntersection)
+            er, eo = errors(i, j, r, o)
+            agreed.append(Match(r, o, d, abs(r.t - o.t), abs(r.u - o.u), False, er, eo))
+            used_r.add(i)
+            used_o.add(j)
+        # 2b. loose matches (tangents are located to ~sqrt(tol), some answers are inaccurate):
+        # the arbiter refines every unmatched point; two that refine to one true point match.
+        loose = []
+        for d, i, j in cand:
+            if i in used_r or j in used_o:
+                continue
+            r, o = rel[i], occ[j]
+            assert isinstance(r, EdgeIntersection) and isinstance(o, EdgeIntersection)
+            pr, po = ref("r", i, r), ref("o", j, o)
+            dd = _pt_dist(pr.point, po.point)
+            if pr.holds and po.holds and dd <= tol:
+                loose.append((dd, d, i, j))
+        for _dd, d, i, j in sorted(loose):
+            if i in used_r or j in used_o:
+                continue
+            r, o = rel[i], occ[j]
+            assert isinstance(r, EdgeIntersection) and isinstance(o, EdgeIntersection)
+            pr, po = ref("r", i, r), ref("o", j, o)
+            er, eo = _pt_dist(r.point, pr.point), _pt_dist(o.point, po.point)
+            agreed.append(Match(r, o, d, abs(r.t - o.t), abs(r.u - o.u), True, er, eo))
+            used_r.add(i)
+            used_o.add(j)
+        # 3. what is left: arbitrate
+        for side, mine, theirs, used_m, _used_t in (
+            ("relief_cad", rel, occ, used_r, used_o),
+            ("occt", occ, rel, used_o, used_r),
+        ):
+            other: Side = "occt" if side == "relief_cad" else "relief_cad"
+            for k, claim in enumerate(mine):
+                if k in used_m:
+                    continue
+                if isinstance(claim, EdgeOverlap):
+                    counter: tuple[EdgeResult, ...] = tuple(
+                        x
+                        for x in theirs
+                        if isinstance(x, EdgeIntersection) and _in_range(x.t, claim.t, pad_a)
+                    )
+                    verdict = _judge_overlap(ca, cb, claim, counter, tol, side, other)
+                else:
+                    counter = tuple(
+                        x for x in theirs if isinstance(x, EdgeOverlap) and _in_range(claim.t, x.t, pad_a)
+                    )
+                    if counter:
+                        continue  # judged from the overlap's side
+                    check = ref("r" if side == "relief_cad" else "o", k, claim)
+                    verdict = _judge_point(check, claim, mine, theirs, k, tol, side, other, ca, cb)
+                disagreements.append(Disagreement(side, claim, counter, verdict))
+    return agreed, disagreements
+
+
+def _judge_point(
+    check: PointCheck,
+    claim: EdgeIntersection,
+    mine: list[EdgeResult],
+    theirs: list[EdgeResult],
+    k: int,
+    tol: float,
+    side: str,
+    other: str,
+    ca: ExactCurve,
+    cb: ExactCurve,
+) -> Verdict:
+    if not check.holds:
+        return Verdict(
+            other,
+            "nothing",
+            f"{side}'s point is spurious: the closest approach nearby is {check.distance:.3g} > tol",
+            check.distance,
+            check.exact,
+        )
+    # duplicate: another result of the same side refines to the same true point
+    for j, m in enumerate(mine):
+        if j != k and isinstance(m, EdgeIntersection):
+            if _pt_dist(m.point, check.point) <= tol and (j < k or _pt_dist(claim.point, check.point) > tol):
+                return Verdict(
+                    other,
+                    "duplicate",
+                    f"{side} reports this {check.kind} point twice",
+                    check.distance,
+                    check.exact,
+                )
+    for m in theirs:
+        if isinstance(m, EdgeIntersection) and _pt_dist(m.point, check.point) <= tol:
+            return Verdict(
+                "neither",
+                check.kind,
+                f"both found this {check.kind} point but {side} placed a second one off it "
+                f"(refined distance {check.distance:.3g})",
+                check.distance,
+                check.exact,
+            )
+    return Verdict(
+        side,
+        check.kind,
+        f"{other} missed a true {check.kind} point (refined distance {check.distance:.3g} <= tol)",
+        check.distance,
+        check.exact,
+    )
+
+
+def _judge_overlap(
+    ca: ExactCurve,
+    cb: ExactCurve,
+    claim: EdgeOverlap,
+    counter: tuple[EdgeResult, ...],
+    tol: float,
+    side: str,
+    other: str,
+) -> Verdict:
+    chk = arbitrate_overlap(ca, cb, claim.t, claim.u, tol=tol)
+    if chk.holds:
+        return Verdict(
+            side,
+            "overlap",
+            f"the curves {'coincide' if chk.status == 'coincident' else 'stay within tol'} over the "
+            f"range (max distance {chk.max_distance:.3g}); {other} "
+            f"{'reported only points' if counter else 'missed it'}",
+            chk.max_distance,
+        )
+    truth_pts = chk.points
+    matched = len(counter) == len(truth_pts) and all(
+        any(_pt_dist(c.point, p.point) <= max(tol, math.sqrt(tol * ca.size) * 10) for p in truth_pts)
+        for c in counter
+        if isinstance(c, EdgeIntersection)
+    )
+    if chk.status == "tangent":
+        what = f"a tangent point, not an overlap (distance rises to {chk.max_distance:.3g} along the range)"
+    elif chk.status == "none":
+        what = f"nothing: the curves are {chk.max_distance:.3g} apart at most along the range"
+    else:
+        what = (
+            f"{len(truth_pts)} isolated point(s), not an overlap (max distance {chk.max_distance:.3g} > tol)"
+        )
+    if matched:
+        return Verdict(
+            other,
+            chk.status if chk.status != "none" else "nothing",
+            f"the true answer is {what}",
+            chk.max_distance,
+        )
+    return Verdict(
+        "neither",
+        chk.status,
+        f"the true answer is {what}; {other} reported {len(counter)} point(s)",
+        chk.max_distance,
+    )
+
+
+def compare(
+    a: Any,
+    b: Any = None,
+    *,
+    tol: float | None = None,
+    plot: bool = False,
+    relief: Sequence[EdgeResult] | None = None,
+    refine: bool = True,
+) -> Comparison:
+    """Compare relief_cad's intersections of ``a`` and ``b`` with OCCT's, with an exact arbiter.
+
+    Parameters
+    ----------
+    a : TopoDS_Shape, build123d Shape or CadQuery Shape
+        First shape (its unique edges take part).
+    b : same types, optional
+        Second shape; ``None`` for self-intersections.
+    tol : float, optional
+        Tolerance for both sides and the arbiter; default the largest ``BRep_Tool``
+        tolerance of the edges (OCCT's default, :func:`~relief_cad.cad.occt.default_occt_tolerance`).
+    plot : bool
+        Make the notebook view (``_repr_html_``) include a picture.
+    relief : sequence of results, optional
+        relief_cad's answer if already computed (otherwise :func:`relief_cad.cad.intersections`
+        is called with ``tol``).
+    refine : bool
+        Also refine every agreed point, to measure each side's error against the truth
+        (:attr:`Match.relief_error`, :attr:`Match.occt_error`).
+
+    Returns
+    -------
+    Comparison
+
+    Examples
+    --------
+    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+    >>> from OCP.gp import gp_Pnt
+    >>> a = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(2, 2, 0)).Edge()
+    >>> b = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 2, 0), gp_Pnt(2, 0, 0)).Edge()
+    >>> c = compare(a, b, relief=[])  # as if relief_cad had missed the crossing
+    >>> [(d.claimant, d.verdict.winner, d.verdict.truth) for d in c.disagreements]
+    [('occt', 'occt', 'crossing')]
+    """
+    import mpmath
+
+    edges_a = unique_edges(a)
+    edges_b = edges_a if b is None else unique_edges(b)
+    if tol is None:
+        tol = default_occt_tolerance(*edges_a, *edges_b)
+    errors: dict[str, str] = {}
+    times: dict[str, float] = {}
+    t0 = time.perf_counter()
+    if relief is None:
+        try:
+            from . import intersections  # type: ignore[attr-defined,unused-ignore]
+
+            relief_res = list(intersections(a, b, tol=tol))
+        except Exception as exc:  # noqa: BLE001 - recorded, the comparison goes on
+            errors["relief_cad"] = f"{type(exc).__name__}: {exc}"
+            relief_res = []
+    else:
+        relief_res = list(relief)
+    t1 = time.perf_counter()
+    try:
+        occt_res: list[EdgeResult] = list(occt_intersections(a, b, tol=tol))
+    except Exception as exc:  # noqa: BLE001
+        errors["occt"] = f"{type(exc).__name__}: {exc}"
+        occt_res = []
+    t2 = time.perf_counter()
+    times["relief_cad"], times["occt"] = t1 - t0, t2 - t1
+    with mpmath.workdps(ARBITER_DIGITS):
+        exacts_a = [ExactCurve(e) for e in edges_a]
+        exacts_b = exacts_a if b is None else [ExactCurve(e) for e in edges_b]
+        agreed, dis = _match_side(relief_res, occt_res, exacts_a, exacts_b, float(tol), b is None, refine)
+    times["arbiter"] = time.perf_counter() - t2
+    routes = list(dict.fromkeys(r.route for r in occt_res))
+    return Comparison(
+        float(tol),
+        relief_res,
+        occt_res,
+        agreed,
+        dis,
+        routes,
+        times,
+        errors,
+        list(edges_a),
+        list(edges_b),
+        plot,
+    )
