@@ -1,0 +1,280 @@
+"""Space intersection by the relief scheme, checked against truth built by construction.
+
+Certified truth here does not come from the intersector: meetings are built exactly (dyadic
+control points and parameters, so the translated curve passes through the point exactly in
+floating point), the paper-form pairs come from mirror-symmetric planar arcs whose crossing has a
+closed form, overlaps are sub-segments with exact ends, skew pairs have a known constant gap.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+from relief_cad import RationalBezier, preimage_of_lift
+from relief_cad.errors import InputTypeError, ReliefCadError, ToleranceError
+from relief_cad.results import Intersection, Overlap
+from relief_cad.space import intersect_space, relief_scheme
+
+RNG_SEEDS = range(12)
+TRANSFORMS = [
+    (1.0, np.zeros(3)),
+    (1e-4, np.zeros(3)),
+    (1e5, np.zeros(3)),
+    (1.0, np.array([1e4, -1e4, 1e4])),
+    (1e-4, np.array([1e4, 0.0, 0.0])),
+]
+
+
+def bern(n: int, i: int, t: Fraction) -> Fraction:
+    return math.comb(n, i) * t**i * (1 - t) ** (n - i)
+
+
+def exact_point(pts: np.ndarray, t: Fraction) -> list[Fraction]:
+    n = len(pts) - 1
+    return [sum(Fraction(float(pts[i, j])) * bern(n, i, t) for i in range(n + 1)) for j in range(pts.shape[1])]
+
+
+def dyadic_cubic(rng: np.random.Generator) -> np.ndarray:
+    return rng.integers(-64, 65, size=(4, 3)) / 8.0
+
+
+def mp_closest(a: RationalBezier, b: RationalBezier, t: float, u: float) -> tuple[float, float]:
+    """Certified truth on the actual floating-point data: Newton on grad |a(t) - b(u)|^2 in 60 digits."""
+    import mpmath
+
+    with mpmath.workdps(60):
+        def ev(c: RationalBezier, s: mpmath.mpf) -> tuple[list, list, list]:  # point, 1st, 2nd derivative
+            h = [[mpmath.mpf(float(x)) for x in row] for row in c.homogeneous]
+            n = len(h) - 1
+            def poly(s: mpmath.mpf, d: int) -> list:
+                out = []
+                for j in range(len(h[0])):
+                    out.append(mpmath.diff(lambda x, j=j: sum(h[i][j] * mpmath.binomial(n, i) * x**i * (1 - x) ** (n - i) for i in range(n + 1)), s, d))
+                return out
+            H, H1, H2 = poly(s, 0), poly(s, 1), poly(s, 2)
+            w, w1, w2 = H[-1], H1[-1], H2[-1]
+            p = [x / w for x in H[:-1]]
+            p1 = [(H1[j] - p[j] * w1) / w for j in range(3)]
+            p2 = [(H2[j] - 2 * p1[j] * w1 - p[j] * w2) / w for j in range(3)]
+            return p, p1, p2
+        tt, uu = mpmath.mpf(t), mpmath.mpf(u)
+        for _ in range(30):
+            pa, da, dda = ev(a, tt)
+            pb, db, ddb = ev(b, uu)
+            r = [pa[j] - pb[j] for j in range(3)]
+            g = mpmath.matrix([sum(r[j] * da[j] for j in range(3)), -sum(r[j] * db[j] for j in range(3))])
+            hm = mpmath.matrix([[sum(da[j] ** 2 + r[j] * dda[j] for j in range(3)), -sum(da[j] * db[j] for j in range(3))],
+                                [-sum(da[j] * db[j] for j in range(3)), sum(db[j] ** 2 - r[j] * ddb[j] for j in range(3))]])
+            step = mpmath.lu_solve(hm, g)
+            tt, uu = tt - step[0], uu - step[1]
+            if abs(step[0]) + abs(step[1]) < mpmath.mpf(10) ** -40:
+                break
+        return float(tt), float(uu)
+
+
+def transform(curve: RationalBezier, scale: float, shift: np.ndarray) -> RationalBezier:
+    m = np.eye(4)
+    m[:3, :3] *= scale
+    m[:3, 3] = shift
+    return curve.transformed(m)
+
+
+def meeting_pair(seed: int) -> tuple[RationalBezier, RationalBezier, float, float]:
+    """Two space cubics that meet exactly at a(t*) = b(u*) (exact in binary floating point)."""
+    rng = np.random.default_rng(seed)
+    pa = dyadic_cubic(rng)
+    pb = dyadic_cubic(rng)
+    ts = Fraction(int(rng.integers(1, 16)), 16)
+    us = Fraction(int(rng.integers(1, 16)), 16)
+    x = exact_point(pa, ts)
+    y = exact_point(pb, us)
+    shift = np.array([float(xi - yi) for xi, yi in zip(x, y)])
+    assert all(Fraction(float(xi - yi)) == xi - yi for xi, yi in zip(x, y))
+    pb = pb + shift
+    return RationalBezier(pa), RationalBezier(pb), float(ts), float(us)
+
+
+@pytest.mark.parametrize("seed", RNG_SEEDS)
+@pytest.mark.parametrize(("scale", "shift"), TRANSFORMS)
+def test_random_space_cubics_meeting_at_a_known_point(seed: int, scale: float, shift: np.ndarray) -> None:
+    a, b, ts, us = meeting_pair(seed)
+    a, b = transform(a, scale, shift), transform(b, scale, shift)
+    if scale != 1.0:  # the rounded data need not meet exactly any more: truth on the actual data
+        ts, us = mp_closest(a, b, ts, us)
+    res = intersect_space(a, b)
+    assert len(res) == 1, res
+    r = res[0]
+    assert isinstance(r, Intersection) and r.kind == "crossing"
+    assert abs(r.t - ts) <= 1e-12 and abs(r.u - us) <= 1e-12
+    np.testing.assert_allclose(r.point, a(ts), atol=1e-12 * scale * 100 + 1e-12 * np.abs(shift).max())
+    swapped = intersect_space(b, a)
+    assert len(swapped) == 1 and abs(swapped[0].t - us) <= 1e-12 and abs(swapped[0].u - ts) <= 1e-12
+
+
+@pytest.mark.parametrize("seed", RNG_SEEDS)
+def test_tangential_touch_in_space(seed: int) -> None:
+    """b(u) = a(u) + (u - t*)^2 v touches a at (t*, t*) with a common tangent, nowhere else."""
+    rng = np.random.default_rng(100 + seed)
+    pa = dyadic_cubic(rng)
+    ts = Fraction(int(rng.integers(3, 14)), 16)
+    v = rng.integers(-8, 9, size=3) / 4.0 + np.array([0.0, 0.0, 3.0])
+    # Bernstein coefficients of (u - t*)^2 on degree 3: elevate [t*^2, -t*(1-t*), (1-t*)^2]
+    q = [ts**2, -ts * (1 - ts), (1 - ts) ** 2]
+    c3 = [q[0], (q[0] + 2 * q[1]) / 3, (2 * q[1] + q[2]) / 3, q[2]]
+    pb = pa + np.array([float(c) for c in c3])[:, None] * v[None, :]
+    a, b = RationalBezier(pa), RationalBezier(pb)
+    np.testing.assert_allclose(a(float(ts)), b(float(ts)), atol=1e-13)
+    res = intersect_space(a, b)
+    pts = [r for r in res if isinstance(r, Intersection)]
+    assert len(pts) == 1, res
+    assert pts[0].kind == "tangent"
+    assert abs(pts[0].t - float(ts)) <= 1e-7 and abs(pts[0].u - float(ts)) <= 1e-7
+
+
+def mirror_arcs(w0: float, wm: float, w2: float) -> tuple[RationalBezier, RationalBezier, float]:
+    """A rational quadratic arc and its mirror image in x = 0: exactly one crossing, at t = u = t*."""
+    p1 = RationalBezier([[-1.0, -1.0], [0.0, 1.0], [1.0, 2.0]], [w0, wm, w2])
+    p2 = RationalBezier([[1.0, -1.0], [0.0, 1.0], [-1.0, 2.0]], [w0, wm, w2])
+    ts = 1.0 / (1.0 + math.sqrt(w2 / w0))
+    return p1, p2, ts
+
+
+@pytest.mark.parametrize("weights", [(1.0, 0.5, 1.0), (1.0, 2.0, 0.5), (0.5, 1.5, 0.5), (1.0, 1.0, 1.0)])
+@pytest.mark.parametrize(("k1", "k2"), [(2.0, 2.0), (0.5, 0.5), (2.0, 3.0), (0.5, 4.0)])
+def test_paper_form_pairs_meet_only_where_the_reliefs_agree(weights: tuple[float, float, float], k1: float, k2: float) -> None:
+    p1, p2, ts = mirror_arcs(*weights)
+    k1 = max(k1, max(weights) - 0.25)
+    k2 = max(k2, max(weights) - 0.25) if k2 != k1 else k1
+    q1, q2 = preimage_of_lift(p1, k1), preimage_of_lift(p2, k2)
+    w_at = float(p1.homogeneous[:, 2] @ np.array([(1 - ts) ** 2, 2 * ts * (1 - ts), ts**2]))
+    meets = k1 == k2 or abs(w_at - 1.0) < 1e-15
+    # their projections always cross at (t*, t*)
+    scheme = relief_scheme(q1, q2)
+    assert scheme.frame.name == "model"
+    np.testing.assert_allclose(scheme.a_image(ts), scheme.b_image(ts), atol=1e-14)
+    res = intersect_space(q1, q2)
+    if meets:
+        assert len(res) == 1 and res[0].kind == "crossing"
+        assert abs(res[0].t - ts) <= 1e-12 and abs(res[0].u - ts) <= 1e-12
+    else:
+        assert len(res) == 0, res
+
+
+def line_param(t: float) -> float:
+    """Parameter on the line x = 4u of the point of a with parameter t (x(t) = 3t + 3t^2 - 2t^3)."""
+    return (3 * t + 3 * t**2 - 2 * t**3) / 4
+
+
+@pytest.mark.parametrize(("scale", "shift"), TRANSFORMS)
+@pytest.mark.parametrize("gap_factor", [1e-6, 1e-10, 1.0])
+def test_skew_curves_and_near_misses(scale: float, shift: np.ndarray, gap_factor: float) -> None:
+    """a in z = 0, b = a line at height g above it; projections along z cross at a known point."""
+    a = RationalBezier([[0, 0, 0], [1, 2, 0], [3, 2, 0], [4, 0, 0]])  # y(t) = 6 t (1 - t)
+    # line y = 1 crosses a at y(t) = 6t(1-t) = 1, i.e. t = (3 -+ sqrt(3)) / 6, where x(t) = 3t + 3t^2 - 2t^3
+    size = 4.0
+    g = gap_factor * size
+    b = RationalBezier([[0.0, 1.0, g], [4.0, 1.0, g]])
+    a, b = transform(a, scale, shift), transform(b, scale, shift)
+    res = intersect_space(a, b)
+    tol_default = 1e-9 * np.linalg.norm(np.ptp(np.vstack([a.control_points, b.control_points]), axis=0))
+    roots = [(3 - math.sqrt(3)) / 6, (3 + math.sqrt(3)) / 6]
+    if g * scale < tol_default:
+        assert len(res) == 2, res
+        # a gap below the rounding of the coordinates themselves is indistinguishable from a meeting
+        resolvable = g * scale > 16 * np.finfo(float).eps * np.abs(a.control_points).max()
+        for r, t in zip(res, roots):
+            assert abs(r.t - t) <= 1e-7 and abs(r.u - line_param(t)) <= 1e-7
+            if resolvable:
+                assert r.kind == "tangent"
+                assert r.distance == pytest.approx(g * scale, rel=1e-3, abs=1e-3 * tol_default)
+    else:
+        assert len(res) == 0, res
+    if gap_factor == 1e-6:
+        wide = intersect_space(a, b, tol=2 * g * scale)
+        assert len(wide) == 2 and all(r.kind == "tangent" for r in wide)
+
+
+def overlap_cases() -> list[tuple[str, RationalBezier, RationalBezier, tuple[float, float], tuple[float, float]]]:
+    rng = np.random.default_rng(7)
+    cubic = RationalBezier(dyadic_cubic(rng) + np.array([0, 0, 9.0]), [1.0, 0.75, 1.5, 1.0])
+    sub = cubic.segment(0.25, 0.75)
+    lam = 1.7
+    moebius = RationalBezier(sub.control_points, sub.weights * lam ** np.arange(4))
+    line_a = RationalBezier([[0, 0, 0], [2, 2, 2]])
+    line_b = RationalBezier([[1, 1, 1], [3, 3, 3]])
+    c = math.cos(math.pi / 4)
+    arc = RationalBezier([[1, 0, 0], [1, 1, 0.0], [0, 1, 0]], [1, c, 1]).transformed(
+        np.array([[1, 0, 0, 0], [0, 0.6, -0.8, 1.0], [0, 0.8, 0.6, 2.0], [0, 0, 0, 1.0]])
+    )
+    arc2 = arc.segment(0.5, 1.5)
+    return [
+        ("sub-segment", cubic, sub, (0.25, 0.75), (0.0, 1.0)),
+        ("reversed", cubic, sub.reversed(), (0.25, 0.75), (1.0, 0.0)),
+        ("moebius", cubic, moebius, (0.25, 0.75), (0.0, 1.0)),
+        ("lines", line_a, line_b, (0.5, 1.0), (0.0, 0.5)),
+        ("coincident arcs", arc, arc2, (0.5, 1.0), (0.0, 0.5)),
+    ]
+
+
+@pytest.mark.parametrize("case", overlap_cases(), ids=lambda c: c[0])
+def test_overlaps_in_space(case: tuple) -> None:  # type: ignore[type-arg]
+    _, a, b, t, u = case
+    res = intersect_space(a, b)
+    overlaps = [r for r in res if isinstance(r, Overlap)]
+    assert len(overlaps) == 1 and len(res) == 1, res
+    ov = overlaps[0]
+    assert ov.t == pytest.approx(t, abs=1e-12) and ov.u == pytest.approx(u, abs=1e-12)
+
+
+def test_coplanar_pair_in_a_tilted_plane() -> None:
+    """A parabola arc y = 6t(1-t), x = 4t and the line y = 1 in a tilted plane: two crossings."""
+    rot = np.array([[0.36, 0.48, -0.8], [-0.8, 0.6, 0.0], [0.48, 0.64, 0.6]])
+    m = np.eye(4)
+    m[:3, :3] = rot
+    m[:3, 3] = [5.0, -3.0, 2.0]
+    a = RationalBezier([[0, 0, 0], [1, 2, 0], [3, 2, 0], [4, 0, 0]]).transformed(m)
+    b = RationalBezier([[0.0, 1.0, 0.0], [4.0, 1.0, 0.0]]).transformed(m)
+    res = intersect_space(a, b)
+    roots = [(3 - math.sqrt(3)) / 6, (3 + math.sqrt(3)) / 6]
+    assert [r.kind for r in res] == ["crossing", "crossing"]
+    for r, t in zip(res, roots):
+        assert abs(r.t - t) <= 1e-12 and abs(r.u - line_param(t)) <= 1e-12
+
+
+def test_mixed_planar_and_space_inputs() -> None:
+    planar = RationalBezier([[0, 0], [4, 0]])
+    space = RationalBezier([[1, -1, -1], [1, 1, 1]])
+    res = intersect_space(planar, space)
+    assert len(res) == 1 and abs(res[0].t - 0.25) <= 1e-14 and abs(res[0].u - 0.5) <= 1e-14
+
+
+def test_shared_end_points_are_exact() -> None:
+    a = RationalBezier([[0, 0, 0], [1, 2, 1], [2, 0, 3]])
+    b = RationalBezier([[2, 0, 3], [3, -1, 0], [5, 1, 1]])
+    res = intersect_space(a, b)
+    assert len(res) == 1 and res[0].t == 1.0 and res[0].u == 0.0
+
+
+def test_self_intersection_of_a_space_loop() -> None:
+    # a planar loop (x = t - t^3 style) lifted with z = 0 at the double point
+    a = RationalBezier([[0, 0, 0], [3, 3, 1], [-1, 3, 1], [2, 0, 0]])
+    res = intersect_space(a)
+    assert len(res) == 1
+    r = res[0]
+    assert r.t < r.u
+    np.testing.assert_allclose(a(r.t), a(r.u), atol=1e-12)
+
+
+def test_bad_input() -> None:
+    a = RationalBezier([[0, 0, 0], [1, 1, 1]])
+    with pytest.raises(ToleranceError):
+        intersect_space(a, a, tol=-1.0)
+    with pytest.raises(ToleranceError):
+        intersect_space(a, a, tol=float("nan"))
+    with pytest.raises(InputTypeError) as info:
+        intersect_space(a, "b")  # type: ignore[arg-type]
+    assert isinstance(info.value, ReliefCadError) and isinstance(info.value, TypeError)
