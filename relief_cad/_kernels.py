@@ -1,0 +1,1278 @@
+"""Numba kernels of the planar Bézier-clipping intersector (hot loops only).
+
+Every function here is ``@njit(cache=True)`` and also runs as plain Python when
+``NUMBA_DISABLE_JIT=1``. The public, documented API lives in
+:mod:`relief_cad.intersection` and :mod:`relief_cad.clipping`; these kernels have
+no stability promise.
+
+Data layout
+-----------
+A planar rational curve is passed as Cartesian control points ``P`` of shape
+``(n + 1, 2)`` and weights ``W`` of shape ``(n + 1,)``. Inside a pair solve both
+curves are moved by an *exact* translation (Sterbenz) and an exact power-of-two
+scaling into a frame of size about 1, and converted to homogeneous rows
+``(w x, w y, w)``; the clipping and the Newton polish work in that frame.
+
+Result rows (``RES_COLS`` columns)
+    ``[pair, kind, t, u, t1, u1, x, y, distance]`` with ``kind`` one of
+    :data:`KIND_CROSSING`, :data:`KIND_TANGENT`, :data:`KIND_OVERLAP`,
+    :data:`KIND_UNRESOLVED` (then ``t, t1, u, u1`` hold the box ``t0, t1, u0, u1``
+    in the ``t, t1, u, u1`` columns).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+__all__ = [
+    "KIND_CROSSING",
+    "KIND_OVERLAP",
+    "KIND_TANGENT",
+    "KIND_UNRESOLVED",
+    "RES_COLS",
+    "clip_range_kernel",
+    "fat_line_kernel",
+    "hull_range_kernel",
+    "intersect_batch_kernel",
+    "intersect_pair_kernel",
+    "line_roots_kernel",
+]
+
+KIND_CROSSING = 0
+KIND_TANGENT = 1
+KIND_OVERLAP = 2
+KIND_UNRESOLVED = 3
+RES_COLS = 9
+
+_EPS = 2.220446049250313e-16
+_SPLIT_RATIO = 0.8  # a clip keeping more than 80 % of an interval counts as a stall
+_ROUND = 64.0 * _EPS  # rounding level of a residual, relative to the frame size (~1)
+
+
+# --------------------------------------------------------------------------- helpers
+
+
+@njit(cache=True)
+def _grow(arr, n):  # type: ignore[no-untyped-def]
+    """Return ``arr`` with room for at least ``n`` rows (copying when it must grow)."""
+    if n <= arr.shape[0]:
+        return arr
+    cap = max(n, 2 * arr.shape[0])
+    out = np.empty((cap, arr.shape[1]))
+    out[: arr.shape[0], :] = arr
+    return out
+
+
+@njit(cache=True)
+def _segment(H, t0, t1, out):  # type: ignore[no-untyped-def]
+    """Homogeneous control points of the sub-curve on ``[t0, t1]`` into ``out``."""
+    m = H.shape[0]
+    n = m - 1
+    for i in range(m):
+        out[i, 0] = H[i, 0]
+        out[i, 1] = H[i, 1]
+        out[i, 2] = H[i, 2]
+    if t1 < 1.0:
+        s = 1.0 - t1
+        for r in range(1, n + 1):
+            for i in range(n, r - 1, -1):
+                out[i, 0] = s * out[i - 1, 0] + t1 * out[i, 0]
+                out[i, 1] = s * out[i - 1, 1] + t1 * out[i, 1]
+                out[i, 2] = s * out[i - 1, 2] + t1 * out[i, 2]
+    if t0 > 0.0:
+        tt = t0 / t1 if t1 < 1.0 else t0
+        s = 1.0 - tt
+        for r in range(1, n + 1):
+            for i in range(0, n - r + 1):
+                out[i, 0] = s * out[i, 0] + tt * out[i + 1, 0]
+                out[i, 1] = s * out[i, 1] + tt * out[i + 1, 1]
+                out[i, 2] = s * out[i, 2] + tt * out[i + 1, 2]
+
+
+@njit(cache=True)
+def _cartesian(S, P, W):  # type: ignore[no-untyped-def]
+    """Cartesian points and weights (weights scaled to max 1) of homogeneous rows ``S``.
+
+    Returns the bounding box ``(xlo, xhi, ylo, yhi)`` of the points.
+    """
+    m = S.shape[0]
+    wmax = 0.0
+    for i in range(m):
+        if S[i, 2] > wmax:
+            wmax = S[i, 2]
+    xlo = math.inf
+    xhi = -math.inf
+    ylo = math.inf
+    yhi = -math.inf
+    for i in range(m):
+        w = S[i, 2]
+        x = S[i, 0] / w
+        y = S[i, 1] / w
+        P[i, 0] = x
+        P[i, 1] = y
+        W[i] = w / wmax
+        xlo = min(xlo, x)
+        xhi = max(xhi, x)
+        ylo = min(ylo, y)
+        yhi = max(yhi, y)
+    return xlo, xhi, ylo, yhi
+
+
+@njit(cache=True)
+def _eval(H, t, wk):  # type: ignore[no-untyped-def]
+    """Point, first and second derivative of the rational curve ``H`` at ``t``.
+
+    Returns ``(x, y, dx, dy, ddx, ddy)``; ``wk`` is scratch of ``H``'s shape.
+    """
+    m = H.shape[0]
+    n = m - 1
+    s = 1.0 - t
+    if n == 1:
+        vx = s * H[0, 0] + t * H[1, 0]
+        vy = s * H[0, 1] + t * H[1, 1]
+        vw = s * H[0, 2] + t * H[1, 2]
+        d1x = H[1, 0] - H[0, 0]
+        d1y = H[1, 1] - H[0, 1]
+        d1w = H[1, 2] - H[0, 2]
+        d2x = 0.0
+        d2y = 0.0
+        d2w = 0.0
+    else:
+        for i in range(m):
+            wk[i, 0] = H[i, 0]
+            wk[i, 1] = H[i, 1]
+            wk[i, 2] = H[i, 2]
+        for r in range(1, n - 1):
+            for i in range(0, m - r):
+                wk[i, 0] = s * wk[i, 0] + t * wk[i + 1, 0]
+                wk[i, 1] = s * wk[i, 1] + t * wk[i + 1, 1]
+                wk[i, 2] = s * wk[i, 2] + t * wk[i + 1, 2]
+        r0x = s * wk[0, 0] + t * wk[1, 0]
+        r0y = s * wk[0, 1] + t * wk[1, 1]
+        r0w = s * wk[0, 2] + t * wk[1, 2]
+        r1x = s * wk[1, 0] + t * wk[2, 0]
+        r1y = s * wk[1, 1] + t * wk[2, 1]
+        r1w = s * wk[1, 2] + t * wk[2, 2]
+        vx = s * r0x + t * r1x
+        vy = s * r0y + t * r1y
+        vw = s * r0w + t * r1w
+        d1x = n * (r1x - r0x)
+        d1y = n * (r1y - r0y)
+        d1w = n * (r1w - r0w)
+        c = n * (n - 1)
+        d2x = c * (wk[2, 0] - 2.0 * wk[1, 0] + wk[0, 0])
+        d2y = c * (wk[2, 1] - 2.0 * wk[1, 1] + wk[0, 1])
+        d2w = c * (wk[2, 2] - 2.0 * wk[1, 2] + wk[0, 2])
+    x = vx / vw
+    y = vy / vw
+    dx = (d1x - x * d1w) / vw
+    dy = (d1y - y * d1w) / vw
+    ddx = (d2x - 2.0 * dx * d1w - x * d2w) / vw
+    ddy = (d2y - 2.0 * dy * d1w - y * d2w) / vw
+    return x, y, dx, dy, ddx, ddy
+
+
+# --------------------------------------------------------------------------- clipping
+
+
+@njit(cache=True)
+def fat_line_kernel(P, perpendicular):  # type: ignore[no-untyped-def]
+    """Fat line ``(nx, ny, c, dmin, dmax)`` of control points ``P`` (not widened).
+
+    The signed distance is ``d(x, y) = nx x + ny y + c`` (unit normal); every
+    control point, hence the curve, has ``dmin <= d <= dmax``. The line runs
+    through the end points; when they (nearly) coincide it runs from the first
+    point to the farthest control point; for a point-like polygon it is the x axis
+    direction. ``perpendicular`` swaps in the perpendicular direction (the fat line
+    bounding the curve *along* its chord).
+    """
+    m = P.shape[0]
+    n = m - 1
+    x0 = P[0, 0]
+    y0 = P[0, 1]
+    ex = P[n, 0] - x0
+    ey = P[n, 1] - y0
+    chord = math.hypot(ex, ey)
+    far = 0.0
+    fx = 0.0
+    fy = 0.0
+    for i in range(1, m):
+        ddx = P[i, 0] - x0
+        ddy = P[i, 1] - y0
+        dd = ddx * ddx + ddy * ddy
+        if dd > far:
+            far = dd
+            fx = ddx
+            fy = ddy
+    if chord * chord <= 1e-6 * far:
+        ex = fx
+        ey = fy
+        chord = math.sqrt(far)
+    if chord == 0.0:
+        ex = 1.0
+        ey = 0.0
+        chord = 1.0
+    if perpendicular:
+        nx = ex / chord
+        ny = ey / chord
+    else:
+        nx = -ey / chord
+        ny = ex / chord
+    c = -(nx * x0 + ny * y0)
+    dmin = math.inf
+    dmax = -math.inf
+    for i in range(m):
+        d = nx * P[i, 0] + ny * P[i, 1] + c
+        dmin = min(dmin, d)
+        dmax = max(dmax, d)
+    return nx, ny, c, dmin, dmax
+
+
+@njit(cache=True)
+def hull_range_kernel(e):  # type: ignore[no-untyped-def]
+    """Parameter range where the convex hull of ``(j / m, e[j])`` reaches ``e >= 0``.
+
+    Returns ``(lo, hi)``; ``lo > hi`` means the hull lies entirely below zero.
+    """
+    m = e.shape[0] - 1
+    lo = math.inf
+    hi = -math.inf
+    for j in range(m + 1):
+        if e[j] >= 0.0:
+            sj = j / m
+            lo = min(lo, sj)
+            hi = max(hi, sj)
+    if lo == 0.0 and hi == 1.0:
+        return lo, hi
+    for i in range(m + 1):
+        ei = e[i]
+        for j in range(i + 1, m + 1):
+            ej = e[j]
+            if (ei < 0.0 and ej > 0.0) or (ei > 0.0 and ej < 0.0):
+                si = i / m
+                sj = j / m
+                s = si + (sj - si) * (ei / (ei - ej))
+                lo = min(lo, s)
+                hi = max(hi, s)
+    if lo < 0.0:
+        lo = 0.0
+    if hi > 1.0:
+        hi = 1.0
+    return lo, hi
+
+
+@njit(cache=True)
+def clip_range_kernel(P, W, nx, ny, c, dmin, dmax, e):  # type: ignore[no-untyped-def]
+    """Range ``(lo, hi)`` of a rational curve's parameter where ``dmin <= d <= dmax`` is possible.
+
+    ``d`` is the signed distance ``nx x + ny y + c`` of the curve ``(P, W)``;
+    ``dmin <= d(s)`` is ``sum W_j (d_j - dmin) B_j(s) >= 0`` and ``d(s) <= dmax`` is
+    ``sum W_j (dmax - d_j) B_j(s) >= 0`` (the weights' sum is positive), and each is
+    bounded by the convex hull of its Bézier function. ``e`` is scratch of length
+    ``n + 1``. Returns ``lo > hi`` when the curve cannot meet the strip.
+    """
+    m = P.shape[0]
+    for j in range(m):
+        e[j] = W[j] * (nx * P[j, 0] + ny * P[j, 1] + c - dmin)
+    lo1, hi1 = hull_range_kernel(e)
+    if lo1 > hi1:
+        return 1.0, 0.0
+    for j in range(m):
+        e[j] = W[j] * (dmax - (nx * P[j, 0] + ny * P[j, 1] + c))
+    lo2, hi2 = hull_range_kernel(e)
+    return max(lo1, lo2), min(hi1, hi2)
+
+
+# --------------------------------------------------------------------------- polish
+
+
+@njit(cache=True)
+def _newton(HA, HB, t, u, wa, wb, iters):  # type: ignore[no-untyped-def]
+    """Newton on ``a(t) - b(u) = 0`` from ``(t, u)``, clamped to the unit square.
+
+    Returns ``(t, u, residual)`` of the best iterate.
+    """
+    bt = t
+    bu = u
+    bres = math.inf
+    for _ in range(iters):
+        ax, ay, adx, ady, _a2, _a3 = _eval(HA, t, wa)
+        bx, by, bdx, bdy, _b2, _b3 = _eval(HB, u, wb)
+        fx = ax - bx
+        fy = ay - by
+        res = math.hypot(fx, fy)
+        if res < bres:
+            bres = res
+            bt = t
+            bu = u
+        if res == 0.0:
+            break
+        det = -adx * bdy + ady * bdx
+        scale = math.hypot(adx, ady) * math.hypot(bdx, bdy)
+        if scale == 0.0 or abs(det) <= 1e-300:
+            break
+        # J = [[adx, -bdx], [ady, -bdy]]; J d = -F
+        dt = (-fx * (-bdy) + bdx * (-fy)) / det
+        du = (adx * (-fy) - ady * (-fx)) / det
+        nt = min(1.0, max(0.0, t + dt))
+        nu = min(1.0, max(0.0, u + du))
+        if nt == t and nu == u:
+            break
+        t = nt
+        u = nu
+    return bt, bu, bres
+
+
+@njit(cache=True)
+def _closest(HA, HB, t, u, wa, wb, iters):  # type: ignore[no-untyped-def]
+    """Local minimum of ``|a(t) - b(u)|`` from ``(t, u)`` (damped Newton, clamped).
+
+    Returns ``(t, u, distance)``.
+    """
+    ax, ay, adx, ady, addx, addy = _eval(HA, t, wa)
+    bx, by, bdx, bdy, bddx, bddy = _eval(HB, u, wb)
+    fx = ax - bx
+    fy = ay - by
+    f2 = fx * fx + fy * fy
+    lam = 0.0
+    for _ in range(iters):
+        g1 = fx * adx + fy * ady
+        g2 = -(fx * bdx + fy * bdy)
+        h11 = adx * adx + ady * ady + fx * addx + fy * addy
+        h22 = bdx * bdx + bdy * bdy - (fx * bddx + fy * bddy)
+        h12 = -(adx * bdx + ady * bdy)
+        improved = False
+        for _k in range(30):
+            a11 = h11 + lam
+            a22 = h22 + lam
+            det = a11 * a22 - h12 * h12
+            if a11 <= 0.0 or det <= 0.0:
+                lam = max(2.0 * lam, 1e-12 * (abs(h11) + abs(h22)) + 1e-300)
+                continue
+            dt = -(a22 * g1 - h12 * g2) / det
+            du = -(a11 * g2 - h12 * g1) / det
+            nt = min(1.0, max(0.0, t + dt))
+            nu = min(1.0, max(0.0, u + du))
+            if nt == t and nu == u:
+                break
+            nax, nay, nadx, nady, naddx, naddy = _eval(HA, nt, wa)
+            nbx, nby, nbdx, nbdy, nbddx, nbddy = _eval(HB, nu, wb)
+            nfx = nax - nbx
+            nfy = nay - nby
+            nf2 = nfx * nfx + nfy * nfy
+            if nf2 <= f2:
+                t = nt
+                u = nu
+                ax, ay, adx, ady, addx, addy = nax, nay, nadx, nady, naddx, naddy
+                bx, by, bdx, bdy, bddx, bddy = nbx, nby, nbdx, nbdy, nbddx, nbddy
+                fx = nfx
+                fy = nfy
+                f2 = nf2
+                lam *= 0.1
+                improved = True
+                break
+            lam = max(4.0 * lam, 1e-12 * (abs(h11) + abs(h22)) + 1e-300)
+        if not improved:
+            break
+    return t, u, math.sqrt(f2)
+
+
+@njit(cache=True)
+def _project(H, px, py, wk, nsamp):  # type: ignore[no-untyped-def]
+    """Parameter ``u`` of the point of curve ``H`` closest to ``(px, py)``, and the distance."""
+    best = math.inf
+    bu = 0.0
+    for k in range(nsamp + 1):
+        uu = k / nsamp
+        x, y, _dx, _dy, _ddx, _ddy = _eval(H, uu, wk)
+        d = math.hypot(x - px, y - py)
+        if d < best:
+            best = d
+            bu = uu
+    u = bu
+    for _ in range(40):
+        x, y, dx, dy, ddx, ddy = _eval(H, u, wk)
+        fx = x - px
+        fy = y - py
+        g = fx * dx + fy * dy
+        h = dx * dx + dy * dy + fx * ddx + fy * ddy
+        if h <= 0.0:
+            break
+        nu = min(1.0, max(0.0, u - g / h))
+        nx, ny, _a, _b, _c, _d = _eval(H, nu, wk)
+        nd = math.hypot(nx - px, ny - py)
+        if nd > best:
+            break
+        done = nu == u
+        best = nd
+        bu = nu
+        u = nu
+        if done:
+            break
+    return bu, best
+
+
+@njit(cache=True)
+def _point_on(H, px, py, tol, S, C, V, e, wk):  # type: ignore[no-untyped-def]
+    """Closest point of curve ``H`` to ``(px, py)`` if it may be within ``tol``.
+
+    Clips the parameter range against two perpendicular strips of half-width
+    ``tol`` around the point (cheap rejection), then projects by Newton.
+    Returns ``(u, distance)`` with ``distance = inf`` when rejected.
+    """
+    u0 = 0.0
+    u1 = 1.0
+    for _ in range(30):
+        _segment(H, u0, u1, S)
+        xl, xh, yl, yh = _cartesian(S, C, V)
+        if px < xl - tol or px > xh + tol or py < yl - tol or py > yh + tol:
+            return 0.0, math.inf
+        if math.hypot(xh - xl, yh - yl) <= tol:
+            break
+        w0 = u1 - u0
+        for perp in (False, True):
+            nx, ny, c, _dmin, _dmax = fat_line_kernel(C, perp)
+            dp = nx * px + ny * py + c
+            lo, hi = clip_range_kernel(C, V, nx, ny, c, dp - tol, dp + tol, e)
+            if lo > hi:
+                return 0.0, math.inf
+            w = u1 - u0
+            nu0 = u0 + lo * w
+            u1 = max(nu0, u0 + hi * w)
+            u0 = nu0
+            if perp is False:
+                _segment(H, u0, u1, S)
+                _cartesian(S, C, V)
+        if u1 - u0 > 0.8 * w0:
+            # stalled (several candidate stretches): sample the remaining range
+            best = math.inf
+            bu = u0
+            for k in range(17):
+                uu = u0 + (u1 - u0) * (k / 16.0)
+                x, y, _dx, _dy, _ddx, _ddy = _eval(H, uu, wk)
+                d = math.hypot(x - px, y - py)
+                if d < best:
+                    best = d
+                    bu = uu
+            u0 = bu
+            u1 = bu
+            break
+    u = 0.5 * (u0 + u1)
+    x, y, _dx, _dy, _ddx, _ddy = _eval(H, u, wk)
+    best = math.hypot(x - px, y - py)
+    bu = u
+    for _ in range(40):
+        x, y, dx, dy, ddx, ddy = _eval(H, u, wk)
+        fx = x - px
+        fy = y - py
+        g = fx * dx + fy * dy
+        h = dx * dx + dy * dy + fx * ddx + fy * ddy
+        if h <= 0.0:
+            h = dx * dx + dy * dy
+            if h == 0.0:
+                break
+        nu = min(1.0, max(0.0, u - g / h))
+        if nu == u:
+            break
+        x, y, _dx, _dy, _ddx, _ddy = _eval(H, nu, wk)
+        d = math.hypot(x - px, y - py)
+        if d > best:
+            break
+        best = d
+        bu = nu
+        u = nu
+    return bu, best
+
+
+@njit(cache=True)
+def _angle_sin(HA, HB, t, u, wa, wb):  # type: ignore[no-untyped-def]
+    """``|sin|`` of the angle between the curves' tangents at ``a(t)``, ``b(u)``.
+
+    A zero first derivative falls back on the second one; ``1.0`` when undefined.
+    """
+    _ax, _ay, adx, ady, addx, addy = _eval(HA, t, wa)
+    _bx, _by, bdx, bdy, bddx, bddy = _eval(HB, u, wb)
+    la = math.hypot(adx, ady)
+    if la == 0.0:
+        adx, ady = addx, addy
+        la = math.hypot(adx, ady)
+    lb = math.hypot(bdx, bdy)
+    if lb == 0.0:
+        bdx, bdy = bddx, bddy
+        lb = math.hypot(bdx, bdy)
+    if la == 0.0 or lb == 0.0:
+        return 1.0
+    return abs(adx * bdy - ady * bdx) / (la * lb)
+
+
+# --------------------------------------------------------------------------- pair solve
+
+
+@njit(cache=True)
+def _frame(PA, PB):  # type: ignore[no-untyped-def]
+    """Exact translation ``(cx, cy)`` and power-of-two scale of the joint frame."""
+    cx = 0.0
+    cy = 0.0
+    for k in range(2):
+        lo = math.inf
+        hi = -math.inf
+        for i in range(PA.shape[0]):
+            lo = min(lo, PA[i, k])
+            hi = max(hi, PA[i, k])
+        for i in range(PB.shape[0]):
+            lo = min(lo, PB[i, k])
+            hi = max(hi, PB[i, k])
+        c = 0.0
+        # Sterbenz: x - c is exact when c / 2 <= x <= 2 c (same sign).
+        if lo > 0.0 and hi <= 2.0 * lo:
+            c = lo
+        elif hi < 0.0 and lo >= 2.0 * hi:
+            c = hi
+        if k == 0:
+            cx = c
+        else:
+            cy = c
+    big = 0.0
+    for i in range(PA.shape[0]):
+        big = max(big, abs(PA[i, 0] - cx), abs(PA[i, 1] - cy))
+    for i in range(PB.shape[0]):
+        big = max(big, abs(PB[i, 0] - cx), abs(PB[i, 1] - cy))
+    scale = 1.0
+    if big > 0.0:
+        e = math.frexp(big)[1]
+        scale = math.ldexp(1.0, -e)
+    return cx, cy, scale
+
+
+@njit(cache=True)
+def _default_tol(PA, PB):  # type: ignore[no-untyped-def]
+    """:func:`relief_cad.tolerances.default_tolerance` of both control polygons."""
+    xlo = math.inf
+    xhi = -math.inf
+    ylo = math.inf
+    yhi = -math.inf
+    big = 0.0
+    for P in (PA, PB):
+        for i in range(P.shape[0]):
+            x = P[i, 0]
+            y = P[i, 1]
+            xlo = min(xlo, x)
+            xhi = max(xhi, x)
+            ylo = min(ylo, y)
+            yhi = max(yhi, y)
+            big = max(big, abs(x), abs(y))
+    dx = xhi - xlo
+    dy = yhi - ylo
+    tol = 1e-9 * math.sqrt(dx * dx + dy * dy) + 64.0 * _EPS * big
+    if not (tol > 0.0 and tol < math.inf):
+        return 1e-300
+    return tol
+
+
+@njit(cache=True)
+def _homog(P, W, cx, cy, scale):  # type: ignore[no-untyped-def]
+    """Homogeneous rows of the curve in the frame, weights scaled to max 1."""
+    m = P.shape[0]
+    wmax = 0.0
+    for i in range(m):
+        wmax = max(wmax, W[i])
+    H = np.empty((m, 3))
+    for i in range(m):
+        w = W[i] / wmax
+        H[i, 0] = w * ((P[i, 0] - cx) * scale)
+        H[i, 1] = w * ((P[i, 1] - cy) * scale)
+        H[i, 2] = w
+    return H
+
+
+@njit(cache=True)
+def _near_hull(P, px, py, tol):  # type: ignore[no-untyped-def]
+    """False when ``(px, py)`` is farther than ``tol`` outside one of ``P``'s fat lines."""
+    for perp in (False, True):
+        nx, ny, c, dmin, dmax = fat_line_kernel(P, perp)
+        d = nx * px + ny * py + c
+        if d < dmin - tol or d > dmax + tol:
+            return False
+    return True
+
+
+@njit(cache=True)
+def _in_overlap(ov, nov, t0, t1, u0, u1, margin):  # type: ignore[no-untyped-def]
+    """True when the box lies inside one overlap's parameter rectangle (plus margin)."""
+    for k in range(nov):
+        a0 = ov[k, 0] - margin
+        a1 = ov[k, 1] + margin
+        b0 = min(ov[k, 2], ov[k, 3]) - margin
+        b1 = max(ov[k, 2], ov[k, 3]) + margin
+        if t0 >= a0 and t1 <= a1 and u0 >= b0 and u1 <= b1:
+            return True
+    return False
+
+
+@njit(cache=True)
+def _coincide(HA, HB, ta, ua, tb, ub, tol, wa, wb, nsamp):  # type: ignore[no-untyped-def]
+    """True when a on ``[ta, tb]`` and b on ``[ua, ub]`` coincide (within ``tol``).
+
+    Marches along ``a`` projecting onto ``b`` (and back), requiring monotone ``u``.
+    """
+    u = ua
+    direction = 1.0 if ub > ua else -1.0
+    for k in range(1, nsamp):
+        s = ta + (tb - ta) * (k / nsamp)
+        px, py, _a, _b, _c, _d = _eval(HA, s, wa)
+        # local projection by Newton from the previous u
+        uu = u
+        for _ in range(30):
+            x, y, dx, dy, ddx, ddy = _eval(HB, uu, wb)
+            fx = x - px
+            fy = y - py
+            g = fx * dx + fy * dy
+            h = dx * dx + dy * dy + fx * ddx + fy * ddy
+            if h <= 0.0:
+                h = dx * dx + dy * dy
+                if h == 0.0:
+                    break
+            nu = min(1.0, max(0.0, uu - g / h))
+            if abs(nu - uu) <= 1e-15:
+                uu = nu
+                break
+            uu = nu
+        x, y, _a, _b, _c, _d = _eval(HB, uu, wb)
+        if math.hypot(x - px, y - py) > tol:
+            return False
+        if (uu - u) * direction < -1e-12:
+            return False
+        u = uu
+    if (ub - u) * direction < -1e-12:
+        return False
+    # and back: b's stretch lies on a
+    t = ta
+    for k in range(1, nsamp):
+        s = ua + (ub - ua) * (k / nsamp)
+        px, py, _a, _b, _c, _d = _eval(HB, s, wb)
+        tt = t
+        for _ in range(30):
+            x, y, dx, dy, ddx, ddy = _eval(HA, tt, wa)
+            fx = x - px
+            fy = y - py
+            g = fx * dx + fy * dy
+            h = dx * dx + dy * dy + fx * ddx + fy * ddy
+            if h <= 0.0:
+                h = dx * dx + dy * dy
+                if h == 0.0:
+                    break
+            nt = min(1.0, max(0.0, tt - g / h))
+            if abs(nt - tt) <= 1e-15:
+                tt = nt
+                break
+            tt = nt
+        x, y, _a, _b, _c, _d = _eval(HA, tt, wa)
+        if math.hypot(x - px, y - py) > tol:
+            return False
+        t = tt
+    return True
+
+
+@njit(cache=True)
+def _add(res, nres, pair, kind, t, u, t1, u1, x, y, dist):  # type: ignore[no-untyped-def]
+    res = _grow(res, nres + 1)
+    res[nres, 0] = pair
+    res[nres, 1] = kind
+    res[nres, 2] = t
+    res[nres, 3] = u
+    res[nres, 4] = t1
+    res[nres, 5] = u1
+    res[nres, 6] = x
+    res[nres, 7] = y
+    res[nres, 8] = dist
+    return res, nres + 1
+
+
+@njit(cache=True)
+def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type: ignore[no-untyped-def]
+    """Intersect two planar rational Bézier curves; append result rows to ``res``.
+
+    Parameters are the Cartesian control points and weights of each curve, the
+    distance tolerance (model units), the iteration budget, the pair index written
+    in column 0, and the result array with its row count. Returns ``(res, nres)``.
+    """
+    ma = PA.shape[0]
+    mb = PB.shape[0]
+    na = ma - 1
+    nb = mb - 1
+    cx, cy, scale = _frame(PA, PB)
+    HA = _homog(PA, WA, cx, cy, scale)
+    HB = _homog(PB, WB, cx, cy, scale)
+    if not tol > 0.0:
+        tol = _default_tol(PA, PB)
+    tl = tol * scale
+    if not tl > 0.0:
+        tl = 1e-300
+    inv = 1.0 / scale
+    wa = np.empty((ma, 3))
+    wb = np.empty((mb, 3))
+    rnd = _ROUND * max(1.0, 1.0)  # frame is normalised to |x| < 1
+
+    # ---------------------------------------------------------------- end points
+    # candidates (t, u, dist) from each end point's projection on the other curve;
+    # an end point outside the other curve's two fat lines (widened by tol) is skipped
+    CA = np.empty((ma, 2))
+    CB = np.empty((mb, 2))
+    VA = np.empty(ma)
+    VB = np.empty(mb)
+    _cartesian(HA, CA, VA)
+    _cartesian(HB, CB, VB)
+    SA = np.empty((ma, 3))
+    SB = np.empty((mb, 3))
+    ea = np.empty(ma)
+    eb = np.empty(mb)
+    CPA = np.empty((ma, 2))
+    CPB = np.empty((mb, 2))
+    VPA = np.empty(ma)
+    VPB = np.empty(mb)
+    ends = np.empty((8, 3))
+    nend = 0
+    for which in range(4):
+        if which < 2:
+            te = float(which)
+            px = CA[na * which, 0]
+            py = CA[na * which, 1]
+            uu, dd = _point_on(HB, px, py, tl, SB, CPB, VPB, eb, wb)
+            # snap to an end point of b when that end also is within tol
+            for ue in (0.0, 1.0):
+                qx = CB[int(ue) * nb, 0]
+                qy = CB[int(ue) * nb, 1]
+                de = math.hypot(qx - px, qy - py)
+                if de <= tl and (abs(uu - ue) < 1e-6 or de <= dd):
+                    uu = ue
+                    dd = de
+            tt = te
+        else:
+            ue = float(which - 2)
+            px = CB[nb * (which - 2), 0]
+            py = CB[nb * (which - 2), 1]
+            tt, dd = _point_on(HA, px, py, tl, SA, CPA, VPA, ea, wa)
+            for te in (0.0, 1.0):
+                qx = CA[int(te) * na, 0]
+                qy = CA[int(te) * na, 1]
+                de = math.hypot(qx - px, qy - py)
+                if de <= tl and (abs(tt - te) < 1e-6 or de <= dd):
+                    tt = te
+                    dd = de
+            uu = ue
+        if dd <= tl:
+            dup = False
+            for k in range(nend):
+                if abs(ends[k, 0] - tt) <= 1e-9 and abs(ends[k, 1] - uu) <= 1e-9:
+                    dup = True
+                    # prefer exact end values
+                    if tt == 0.0 or tt == 1.0:
+                        ends[k, 0] = tt
+                    if uu == 0.0 or uu == 1.0:
+                        ends[k, 1] = uu
+            if not dup:
+                ends[nend, 0] = tt
+                ends[nend, 1] = uu
+                ends[nend, 2] = dd
+                nend += 1
+
+    # ---------------------------------------------------------------- overlaps
+    ov = np.empty((4, 4))
+    nov = 0
+    used = np.zeros(8, dtype=np.bool_)
+    nsamp = max(24, na * nb + 4)
+    for i in range(nend):
+        for j in range(i + 1, nend):
+            if used[i] and used[j]:
+                continue
+            if abs(ends[i, 0] - ends[j, 0]) <= 1e-9 or abs(ends[i, 1] - ends[j, 1]) <= 1e-9:
+                continue
+            if ends[i, 0] < ends[j, 0]:
+                p, q = i, j
+            else:
+                p, q = j, i
+            if _coincide(HA, HB, ends[p, 0], ends[p, 1], ends[q, 0], ends[q, 1], tl, wa, wb, nsamp):
+                ov[nov, 0] = ends[p, 0]
+                ov[nov, 1] = ends[q, 0]
+                ov[nov, 2] = ends[p, 1]
+                ov[nov, 3] = ends[q, 1]
+                nov += 1
+                used[i] = True
+                used[j] = True
+                if nov == 4:
+                    break
+        if nov == 4:
+            break
+
+    # ---------------------------------------------------------------- clipping
+    stack = np.empty((64, 4))
+    stack[0, 0] = 0.0
+    stack[0, 1] = 1.0
+    stack[0, 2] = 0.0
+    stack[0, 3] = 1.0
+    nstack = 1
+    cands = np.empty((16, 4))
+    ncand = 0
+    unres = np.empty((4, 4))
+    nunres = 0
+    epsb = max(tl, 1e-10)
+    iters = 0
+    margin = 1e-9
+    while nstack > 0:
+        nstack -= 1
+        t0 = stack[nstack, 0]
+        t1 = stack[nstack, 1]
+        u0 = stack[nstack, 2]
+        u1 = stack[nstack, 3]
+        while True:
+            iters += 1
+            if iters > budget:
+                unres = _grow(unres, nunres + 1)
+                unres[nunres, 0] = t0
+                unres[nunres, 1] = t1
+                unres[nunres, 2] = u0
+                unres[nunres, 3] = u1
+                nunres += 1
+                break
+            if nov > 0 and _in_overlap(ov, nov, t0, t1, u0, u1, margin):
+                break
+            _segment(HA, t0, t1, SA)
+            _segment(HB, u0, u1, SB)
+            axl, axh, ayl, ayh = _cartesian(SA, CA, VA)
+            bxl, bxh, byl, byh = _cartesian(SB, CB, VB)
+            if axl > bxh + tl or bxl > axh + tl or ayl > byh + tl or byl > ayh + tl:
+                break
+            exa = math.hypot(axh - axl, ayh - ayl)
+            exb = math.hypot(bxh - bxl, byh - byl)
+            if (exa <= epsb and exb <= epsb) or (t1 - t0 <= 1e-15 and u1 - u0 <= 1e-15):
+                cands = _grow(cands, ncand + 1)
+                cands[ncand, 0] = t0
+                cands[ncand, 1] = t1
+                cands[ncand, 2] = u0
+                cands[ncand, 3] = u1
+                ncand += 1
+                break
+            wt = t1 - t0
+            wu = u1 - u0
+            empty = False
+            wida = 0.0
+            widb = 0.0
+            for perp in (False, True):
+                # clip b against a's fat line
+                nx, ny, c, dmin, dmax = fat_line_kernel(CA, perp)
+                if not perp:
+                    wida = dmax - dmin
+                lo, hi = clip_range_kernel(CB, VB, nx, ny, c, dmin - tl, dmax + tl, eb)
+                if lo > hi:
+                    empty = True
+                    break
+                if lo > 0.0 or hi < 1.0:
+                    w = u1 - u0
+                    nu0 = u0 + lo * w
+                    nu1 = u0 + hi * w
+                    u0 = nu0
+                    u1 = max(nu0, nu1)
+                    _segment(HB, u0, u1, SB)
+                    _cartesian(SB, CB, VB)
+                # clip a against b's fat line
+                nx, ny, c, dmin, dmax = fat_line_kernel(CB, perp)
+                if not perp:
+                    widb = dmax - dmin
+                lo, hi = clip_range_kernel(CA, VA, nx, ny, c, dmin - tl, dmax + tl, ea)
+                if lo > hi:
+                    empty = True
+                    break
+                if lo > 0.0 or hi < 1.0:
+                    w = t1 - t0
+                    nt0 = t0 + lo * w
+                    nt1 = t0 + hi * w
+                    t0 = nt0
+                    t1 = max(nt0, nt1)
+                    _segment(HA, t0, t1, SA)
+                    _cartesian(SA, CA, VA)
+                if (t1 - t0) <= _SPLIT_RATIO * wt or (u1 - u0) <= _SPLIT_RATIO * wu:
+                    break
+            if empty:
+                break
+            if (t1 - t0) <= _SPLIT_RATIO * wt or (u1 - u0) <= _SPLIT_RATIO * wu:
+                continue
+            # stalled: a flat band contact, or split the larger sub-curve
+            if wida <= tl and widb <= tl:
+                cands = _grow(cands, ncand + 1)
+                cands[ncand, 0] = t0
+                cands[ncand, 1] = t1
+                cands[ncand, 2] = u0
+                cands[ncand, 3] = u1
+                ncand += 1
+                break
+            stack = _grow(stack, nstack + 2)
+            if (exa >= exb and t1 - t0 > 1e-15) or u1 - u0 <= 1e-15:
+                tm = 0.5 * (t0 + t1)
+                stack[nstack, 0] = tm
+                stack[nstack, 1] = t1
+                stack[nstack, 2] = u0
+                stack[nstack, 3] = u1
+                nstack += 1
+                t1 = tm
+            else:
+                um = 0.5 * (u0 + u1)
+                stack[nstack, 0] = t0
+                stack[nstack, 1] = t1
+                stack[nstack, 2] = um
+                stack[nstack, 3] = u1
+                nstack += 1
+                u1 = um
+        if iters > budget:
+            while nstack > 0:
+                nstack -= 1
+                unres = _grow(unres, nunres + 1)
+                unres[nunres, :] = stack[nstack, :]
+                nunres += 1
+
+    # ---------------------------------------------------------------- clusters
+    label = np.arange(ncand)
+    for i in range(ncand):
+        for j in range(i + 1, ncand):
+            gt = max(cands[i, 0], cands[j, 0]) - min(cands[i, 1], cands[j, 1])
+            gu = max(cands[i, 2], cands[j, 2]) - min(cands[i, 3], cands[j, 3])
+            if gt <= 1e-7 and gu <= 1e-7:
+                li = label[i]
+                while label[li] != li:
+                    li = label[li]
+                lj = label[j]
+                while label[lj] != lj:
+                    lj = label[lj]
+                if li != lj:
+                    label[max(li, lj)] = min(li, lj)
+    for i in range(ncand):
+        li = label[i]
+        while label[li] != li:
+            li = label[li]
+        label[i] = li
+
+    # points found: (t, u, dist, kind, priority)
+    pts = np.empty((8 + ncand, 5))
+    npts = 0
+    for k in range(nend):
+        pts = _grow(pts, npts + 1)
+        pts[npts, 0] = ends[k, 0]
+        pts[npts, 1] = ends[k, 1]
+        pts[npts, 2] = ends[k, 2]
+        pts[npts, 3] = -1.0  # kind decided below
+        pts[npts, 4] = 2.0  # end points win merges
+        npts += 1
+    roots = np.empty((ncand + 4, 3))
+    for root_label in range(ncand):
+        if label[root_label] != root_label:
+            continue
+        # members of this cluster
+        nmem = 0
+        for i in range(ncand):
+            if label[i] == root_label:
+                nmem += 1
+        stride = max(1, nmem // 24)
+        nroots = 0
+        bestres = math.inf
+        bt = 0.0
+        bu = 0.0
+        cnt = 0
+        ct0 = math.inf
+        ct1 = -math.inf
+        cu0 = math.inf
+        cu1 = -math.inf
+        for i in range(ncand):
+            if label[i] != root_label:
+                continue
+            ct0 = min(ct0, cands[i, 0])
+            ct1 = max(ct1, cands[i, 1])
+            cu0 = min(cu0, cands[i, 2])
+            cu1 = max(cu1, cands[i, 3])
+            cnt += 1
+            if (cnt - 1) % stride != 0:
+                continue
+            t, u, r = _newton(HA, HB, 0.5 * (cands[i, 0] + cands[i, 1]),
+                              0.5 * (cands[i, 2] + cands[i, 3]), wa, wb, 60)
+            if r < bestres:
+                bestres = r
+                bt = t
+                bu = u
+            if r <= rnd:
+                dup = False
+                for k in range(nroots):
+                    if abs(roots[k, 0] - t) <= 1e-11 and abs(roots[k, 1] - u) <= 1e-11:
+                        dup = True
+                        break
+                if not dup:
+                    roots = _grow(roots, nroots + 1)
+                    roots[nroots, 0] = t
+                    roots[nroots, 1] = u
+                    roots[nroots, 2] = r
+                    nroots += 1
+        if nroots == 0:
+            t, u, d = _closest(HA, HB, bt, bu, wa, wb, 60)
+            if d <= tl:
+                pts = _grow(pts, npts + 1)
+                pts[npts, 0] = t
+                pts[npts, 1] = u
+                pts[npts, 2] = d
+                pts[npts, 3] = float(KIND_TANGENT)
+                pts[npts, 4] = 0.0
+                npts += 1
+            continue
+        # sort roots by t (insertion sort)
+        for i in range(1, nroots):
+            j = i
+            while j > 0 and roots[j - 1, 0] > roots[j, 0]:
+                for c3 in range(3):
+                    tmp = roots[j - 1, c3]
+                    roots[j - 1, c3] = roots[j, c3]
+                    roots[j, c3] = tmp
+                j -= 1
+        # merge neighbours with no measurable gap between them (a split double root)
+        i = 0
+        while i < nroots:
+            j = i
+            while j + 1 < nroots:
+                tm = 0.5 * (roots[j, 0] + roots[j + 1, 0])
+                um = 0.5 * (roots[j, 1] + roots[j + 1, 1])
+                mx, my, _a, _b, _c, _d = _eval(HA, tm, wa)
+                uq = um
+                # distance from a(tm) to b near um (a few Newton steps)
+                for _ in range(8):
+                    x, y, dx, dy, ddx, ddy = _eval(HB, uq, wb)
+                    fx = x - mx
+                    fy = y - my
+                    h = dx * dx + dy * dy + fx * ddx + fy * ddy
+                    if h <= 0.0:
+                        break
+                    uq = min(1.0, max(0.0, uq - (fx * dx + fy * dy) / h))
+                x, y, _a, _b, _c, _d = _eval(HB, uq, wb)
+                dq = math.hypot(x - mx, y - my)
+                if dq <= 4.0 * rnd:
+                    j += 1
+                else:
+                    break
+            if j == i:
+                sn = _angle_sin(HA, HB, roots[i, 0], roots[i, 1], wa, wb)
+                kind = KIND_CROSSING
+                if nroots == 1 and sn < 1e-7:
+                    kind = KIND_TANGENT
+                elif sn < 1e-10:
+                    kind = KIND_TANGENT
+                pts = _grow(pts, npts + 1)
+                pts[npts, 0] = roots[i, 0]
+                pts[npts, 1] = roots[i, 1]
+                pts[npts, 2] = roots[i, 2]
+                pts[npts, 3] = float(kind)
+                pts[npts, 4] = 1.0
+                npts += 1
+            else:
+                t, u, d = _closest(HA, HB, 0.5 * (roots[i, 0] + roots[j, 0]),
+                                   0.5 * (roots[i, 1] + roots[j, 1]), wa, wb, 60)
+                pts = _grow(pts, npts + 1)
+                pts[npts, 0] = t
+                pts[npts, 1] = u
+                pts[npts, 2] = d
+                pts[npts, 3] = float(KIND_TANGENT)
+                pts[npts, 4] = 1.0
+                npts += 1
+            i = j + 1
+
+    # ---------------------------------------------------------------- dedupe + emit
+    keep = np.ones(npts, dtype=np.bool_)
+    for i in range(npts):
+        if not keep[i]:
+            continue
+        for j in range(i + 1, npts):
+            if not keep[j]:
+                continue
+            dt = abs(pts[i, 0] - pts[j, 0])
+            du = abs(pts[i, 1] - pts[j, 1])
+            if dt <= 1e-9 and du <= 1e-9:
+                same = True
+            elif dt <= 1e-6 and du <= 1e-6:
+                # same contact if the curves never separate beyond tol between them
+                tm = 0.5 * (pts[i, 0] + pts[j, 0])
+                um = 0.5 * (pts[i, 1] + pts[j, 1])
+                x, y, _a, _b, _c, _d = _eval(HA, tm, wa)
+                x2, y2, _a, _b, _c, _d = _eval(HB, um, wb)
+                same = math.hypot(x - x2, y - y2) <= tl and (
+                    pts[i, 3] == KIND_TANGENT or pts[j, 3] == KIND_TANGENT
+                    or pts[i, 4] == 2.0 or pts[j, 4] == 2.0)
+            else:
+                same = False
+            if same:
+                if pts[j, 4] > pts[i, 4]:
+                    if pts[j, 3] < 0.0 and pts[i, 3] >= 0.0:
+                        pts[j, 3] = pts[i, 3]
+                    keep[i] = False
+                    break
+                else:
+                    if pts[i, 3] < 0.0 and pts[j, 3] >= 0.0:
+                        pts[i, 3] = pts[j, 3]
+                    keep[j] = False
+    for i in range(npts):
+        if not keep[i]:
+            continue
+        t = pts[i, 0]
+        u = pts[i, 1]
+        # drop points on an overlap
+        on = False
+        for k in range(nov):
+            b0 = min(ov[k, 2], ov[k, 3])
+            b1 = max(ov[k, 2], ov[k, 3])
+            if ov[k, 0] - 1e-6 <= t <= ov[k, 1] + 1e-6 and b0 - 1e-6 <= u <= b1 + 1e-6:
+                on = True
+        if on:
+            continue
+        kind = pts[i, 3]
+        if kind < 0.0:
+            sn = _angle_sin(HA, HB, t, u, wa, wb)
+            kind = float(KIND_TANGENT) if sn < 1e-7 else float(KIND_CROSSING)
+        ax, ay, _a, _b, _c, _d = _eval(HA, t, wa)
+        bx, by, _a, _b, _c, _d = _eval(HB, u, wb)
+        dist = math.hypot(ax - bx, ay - by) * inv
+        px = 0.5 * (ax + bx) * inv + cx
+        py = 0.5 * (ay + by) * inv + cy
+        res, nres = _add(res, nres, pair, kind, t, u, t, u, px, py, dist)
+    for k in range(nov):
+        res, nres = _add(res, nres, pair, float(KIND_OVERLAP), ov[k, 0], ov[k, 2], ov[k, 1], ov[k, 3],
+                         0.0, 0.0, 0.0)
+    for k in range(nunres):
+        res, nres = _add(res, nres, pair, float(KIND_UNRESOLVED), unres[k, 0], unres[k, 2],
+                         unres[k, 1], unres[k, 3], 0.0, 0.0, 0.0)
+    return res, nres
+
+
+@njit(cache=True)
+def intersect_batch_kernel(P, W, offsets, pairs, tol, budget):  # type: ignore[no-untyped-def]
+    """Intersect many pairs in one call.
+
+    ``P`` (N, 2) and ``W`` (N,) hold every curve's control points back to back;
+    curve ``k`` is rows ``offsets[k]:offsets[k + 1]``. ``pairs`` (p, 2) indexes
+    curves; ``tol`` (p,) holds each pair's tolerance. Returns ``(res, nres)``.
+    """
+    res = np.empty((max(16, 2 * pairs.shape[0]), RES_COLS))
+    nres = 0
+    for k in range(pairs.shape[0]):
+        ia = pairs[k, 0]
+        ib = pairs[k, 1]
+        PA = P[offsets[ia]:offsets[ia + 1]]
+        WA = W[offsets[ia]:offsets[ia + 1]]
+        PB = P[offsets[ib]:offsets[ib + 1]]
+        WB = W[offsets[ib]:offsets[ib + 1]]
+        res, nres = intersect_pair_kernel(PA, WA, PB, WB, tol[k], budget, k, res, nres)
+    return res, nres
+
+
+# --------------------------------------------------------------------------- lines
+
+
+@njit(cache=True)
+def line_roots_kernel(e, W, maxdepth):  # type: ignore[no-untyped-def]
+    """Roots in ``[0, 1]`` of the Bernstein polynomial with coefficients ``e``.
+
+    ``W`` holds the weights of the curve (for a Newton polish on the rational
+    distance ``sum e_j B_j / sum W_j B_j``, whose roots are the numerator's).
+    Bézier clipping against the ``s`` axis with subdivision on stalls; returns a
+    sorted array of roots (a cluster of roots closer than ``1e-12`` counts once).
+    """
+    m = e.shape[0]
+    n = m - 1
+    out = np.empty(8)
+    nout = 0
+    stack = np.empty((32, 2))
+    stack[0, 0] = 0.0
+    stack[0, 1] = 1.0
+    nst = 1
+    seg = np.empty((m, 3))
+    H = np.empty((m, 3))
+    for i in range(m):
+        H[i, 0] = e[i]
+        H[i, 1] = 0.0
+        H[i, 2] = 1.0
+    coef = np.empty(m)
+    scr = np.empty(m)
+    big = 0.0
+    for i in range(m):
+        big = max(big, abs(e[i]))
+    if big == 0.0:
+        return out[:0]
+    steps = 0
+    while nst > 0 and steps < maxdepth:
+        nst -= 1
+        s0 = stack[nst, 0]
+        s1 = stack[nst, 1]
+        while steps < maxdepth:
+            steps += 1
+            _segment(H, s0, s1, seg)
+            lo = math.inf
+            hi = -math.inf
+            for i in range(m):
+                coef[i] = seg[i, 0]
+                lo = min(lo, coef[i])
+                hi = max(hi, coef[i])
+            if lo > 0.0 or hi < 0.0:
+                break
+            if s1 - s0 <= 1e-13:
+                out = _grow1(out, nout + 1)
+                out[nout] = 0.5 * (s0 + s1)
+                nout += 1
+                break
+            a, b = hull_range_kernel(coef)
+            for i in range(m):
+                scr[i] = -coef[i]
+            a2, b2 = hull_range_kernel(scr)
+            a = max(a, a2)
+            b = min(b, b2)
+            if a > b:
+                break
+            w = s1 - s0
+            n0 = s0 + a * w
+            n1 = s0 + b * w
+            if n1 - n0 > _SPLIT_RATIO * w:
+                stack = _grow(stack, nst + 1)
+                mid = 0.5 * (n0 + n1)
+                stack[nst, 0] = mid
+                stack[nst, 1] = n1
+                nst += 1
+                s0 = n0
+                s1 = mid
+            else:
+                s0 = n0
+                s1 = max(n0, n1)
+    # polish on the polynomial numerator
+    for k in range(nout):
+        s = out[k]
+        for _ in range(30):
+            v, _y, d, _dy, _dd, _ddy = _eval(H, s, seg)
+            if d == 0.0:
+                break
+            ns = min(1.0, max(0.0, s - v / d))
+            if ns == s:
+                break
+            s = ns
+        out[k] = s
+    out = np.sort(out[:nout])
+    # cluster
+    res = np.empty(nout)
+    nr = 0
+    for k in range(nout):
+        if nr > 0 and out[k] - res[nr - 1] <= 1e-12:
+            continue
+        res[nr] = out[k]
+        nr += 1
+    _ = n
+    return res[:nr]
+
+
+@njit(cache=True)
+def _grow1(arr, n):  # type: ignore[no-untyped-def]
+    if n <= arr.shape[0]:
+        return arr
+    out = np.empty(max(n, 2 * arr.shape[0]))
+    out[: arr.shape[0]] = arr
+    return out

@@ -1,0 +1,436 @@
+"""Curve/curve intersection: the public entry points.
+
+:func:`intersect` intersects two rational Bézier curves (planar curves by
+Bézier clipping here; space curves are handed to :mod:`relief_cad.space`),
+:func:`intersect_line` intersects a planar curve with an infinite line, and
+:func:`intersect_many` runs many planar pairs in one compiled call.
+
+The planar solver (one numba kernel, :mod:`relief_cad._kernels`):
+
+1. moves both curves into a common frame by an exact translation and an exact
+   power-of-two scaling (so parameters and exactness are unaffected);
+2. projects the four end points on the other curve: end point contacts come out
+   with ``t`` or ``u`` exactly ``0.0``/``1.0``; pairs of end point contacts are
+   tested for coincidence in between (dense sampling within ``tol``), giving
+   :class:`~relief_cad.Overlap` intervals whose ends are exact;
+3. Bézier clipping (Sederberg & Nishita) with the fat lines widened by ``tol``,
+   alternating roles, a perpendicular fat line when a clip stalls, a split of the
+   larger sub-curve when that stalls too, and a "flat band" stop when both
+   sub-curves lie within ``tol`` of a line (tangent contacts);
+4. candidate boxes are clustered; Newton's method on ``a(t) - b(u) = 0`` polishes
+   every root; a cluster without a root is a near-miss and gives one tangent
+   contact at the closest approach when the gap is within ``tol``; roots with no
+   measurable gap between them (a double root split by rounding) merge into one
+   tangent contact;
+5. the kind is ``"tangent"`` when the tangents at the contact are parallel
+   (``|sin| < 1e-7`` for an isolated root), otherwise ``"crossing"``.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Iterable, Literal, Sequence
+
+import numpy as np
+
+from ._kernels import (
+    KIND_CROSSING,
+    KIND_OVERLAP,
+    KIND_TANGENT,
+    KIND_UNRESOLVED,
+    RES_COLS,
+    intersect_batch_kernel,
+    intersect_pair_kernel,
+)
+from ._types import FloatArray
+from .curves import RationalBezier
+from .errors import (
+    BudgetExceededError,
+    InputTypeError,
+    InvalidInputError,
+    NonFiniteError,
+    ShapeError,
+    ToleranceError,
+)
+from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result
+from .tolerances import default_tolerance
+
+__all__ = [
+    "DEFAULT_BUDGET",
+    "intersect",
+    "intersect_line",
+    "intersect_many",
+]
+
+DEFAULT_BUDGET: int = 20_000
+"""Default cap on clipping iterations per curve pair (each clip or split is one)."""
+
+OnBudget = Literal["raise", "return"]
+
+_KINDS = {KIND_CROSSING: "crossing", KIND_TANGENT: "tangent"}
+
+
+def _check_curve(c: Any, name: str) -> RationalBezier:
+    if not isinstance(c, RationalBezier):
+        raise InputTypeError(f"{name} should be a RationalBezier, not {type(c).__name__}")
+    return c
+
+
+def _check_tol(tol: Any) -> float:
+    if isinstance(tol, bool) or not isinstance(tol, (int, float, np.floating, np.integer)):
+        raise ToleranceError(f"tol should be a finite distance > 0 (a float), not {type(tol).__name__}")
+    value = float(tol)
+    if not math.isfinite(value) or value <= 0.0:
+        raise ToleranceError(f"tol should be a finite distance > 0, not {value!r}")
+    return value
+
+
+def _check_budget(budget: Any) -> int:
+    if budget is None:
+        return DEFAULT_BUDGET
+    if isinstance(budget, bool) or not isinstance(budget, (int, np.integer)):
+        raise InputTypeError(f"budget should be an int >= 1, not {type(budget).__name__}")
+    if budget < 1:
+        raise InvalidInputError(f"budget should be an int >= 1, not {budget}")
+    return int(budget)
+
+
+def _check_on_budget(on_budget: Any) -> None:
+    if on_budget not in ("raise", "return"):
+        raise InvalidInputError(f"on_budget should be 'raise' or 'return', not {on_budget!r}")
+
+
+def _rows_to_list(rows: FloatArray) -> IntersectionList:
+    """Build the sorted :class:`IntersectionList` of kernel result rows."""
+    items: list[Result] = []
+    boxes: list[ParameterBox] = []
+    for r in rows.tolist():
+        kind = int(r[1])
+        if kind == KIND_OVERLAP:
+            items.append(Overlap(t=(r[2], r[4]), u=(r[3], r[5])))
+        elif kind == KIND_UNRESOLVED:
+            boxes.append(ParameterBox(r[2], r[4], r[3], r[5]))
+        else:
+            items.append(Intersection(r[2], r[3], np.array((r[6], r[7])), _KINDS[kind], r[8]))
+    items.sort(key=lambda x: x.t[0] if isinstance(x, Overlap) else x.t)
+    return IntersectionList(items, boxes)
+
+
+def _finish(result: IntersectionList, on_budget: str) -> IntersectionList:
+    if result.unresolved and on_budget == "raise":
+        raise BudgetExceededError(
+            f"the iteration budget ran out with {len(result.unresolved)} parameter box(es) "
+            "unresolved; pass a larger budget= or on_budget='return'",
+            partial=list(result),
+            unresolved=list(result.unresolved),
+        )
+    return result
+
+
+def _planar(pa: FloatArray, wa: FloatArray, pb: FloatArray, wb: FloatArray, tol: float,
+            budget: int) -> IntersectionList:
+    res = np.empty((16, RES_COLS))
+    res, n = intersect_pair_kernel(pa, wa, pb, wb, tol, budget, 0, res, 0)
+    return _rows_to_list(res[:n])
+
+
+def _split_homogeneous(h: FloatArray, name: str) -> tuple[FloatArray, FloatArray]:
+    h = np.ascontiguousarray(h, dtype=np.float64)
+    if h.ndim != 2 or h.shape[1] != 3 or h.shape[0] < 2:
+        raise ShapeError(f"{name} should have shape (n + 1, 3) with n >= 1, not {h.shape}")
+    w = np.ascontiguousarray(h[:, 2])
+    if not np.all(np.isfinite(h)):
+        raise NonFiniteError(f"{name} should be finite")
+    if not np.all(w > 0.0):
+        raise InvalidInputError(f"{name} weights (last column) should all be > 0")
+    return np.ascontiguousarray(h[:, :2] / w[:, None]), w
+
+
+def _intersect_planar(hA: FloatArray, hB: FloatArray | None, tol: float,
+                      budget: int = DEFAULT_BUDGET) -> IntersectionList:
+    """Planar intersection on homogeneous control points (internal; used by ``space.py``).
+
+    Contract
+    --------
+    ``hA`` and ``hB`` are ``(n + 1, 3)`` arrays of rows ``(w x, w y, w)`` with
+    finite entries and ``w > 0``; ``hB=None`` asks for the self-intersections of
+    ``hA``. ``tol`` is a finite distance > 0 in the units of ``x, y``. Returns an
+    :class:`~relief_cad.IntersectionList` sorted by ``t``, with parameters of the
+    given curves (``t`` on ``hA``, ``u`` on ``hB``) and points of shape ``(2,)``;
+    it never raises on a budget: the unresolved parameter boxes are in
+    ``.unresolved``. Raises :class:`~relief_cad.errors.ShapeError` /
+    :class:`~relief_cad.errors.InvalidInputError` on malformed arrays.
+
+    Examples
+    --------
+    >>> ha = np.array([[0.0, 0.0, 1.0], [2.0, 2.0, 1.0]])
+    >>> hb = np.array([[0.0, 2.0, 1.0], [2.0, 0.0, 1.0]])
+    >>> [(r.t, r.u, r.kind) for r in _intersect_planar(ha, hb, 1e-9)]
+    [(0.5, 0.5, 'crossing')]
+    """
+    pa, wa = _split_homogeneous(hA, "hA")
+    if hB is None:
+        return _self_planar(pa, wa, tol, budget)
+    pb, wb = _split_homogeneous(hB, "hB")
+    return _planar(pa, wa, pb, wb, tol, budget)
+
+
+def _simple_piece(p: FloatArray) -> bool:
+    """True when every chord ``p_j - p_i`` (i < j) lies in one open half-plane.
+
+    Then the (rational) curve is monotone along some direction and cannot cross itself.
+    """
+    d = p[None, :, :] - p[:, None, :]
+    iu = np.triu_indices(p.shape[0], 1)
+    v = d[iu]
+    v = v[np.hypot(v[:, 0], v[:, 1]) > 0.0]
+    if v.shape[0] == 0:
+        return True
+    ang = np.sort(np.arctan2(v[:, 1], v[:, 0]))
+    gaps = np.diff(np.concatenate([ang, ang[:1] + 2 * np.pi]))
+    return bool(gaps.max() > np.pi + 1e-12)
+
+
+def _self_planar(p: FloatArray, w: FloatArray, tol: float, budget: int) -> IntersectionList:
+    """Self-intersections: split into monotone pieces, intersect pairs of pieces."""
+    curve = RationalBezier(p, w)
+    pieces: list[tuple[float, float, RationalBezier]] = []
+    todo = [(0.0, 1.0, curve, 0)]
+    while todo:
+        s0, s1, c, depth = todo.pop()
+        if depth >= 10 or _simple_piece(c.control_points):
+            pieces.append((s0, s1, c))
+        else:
+            left, right = c.split(0.5)
+            sm = 0.5 * (s0 + s1)
+            todo.append((sm, s1, right, depth + 1))
+            todo.append((s0, sm, left, depth + 1))
+    pieces.sort(key=lambda x: x[0])
+    items: list[Result] = []
+    boxes: list[ParameterBox] = []
+    for i in range(len(pieces)):
+        for j in range(i + 1, len(pieces)):
+            s0, s1, ci = pieces[i]
+            r0, r1, cj = pieces[j]
+            sub = _planar(ci.control_points, ci.weights, cj.control_points, cj.weights, tol, budget)
+            for r in sub:
+                if isinstance(r, Overlap):
+                    continue
+                t = s0 + r.t * (s1 - s0) if r.t not in (0.0, 1.0) else (s0 if r.t == 0.0 else s1)
+                u = r0 + r.u * (r1 - r0) if r.u not in (0.0, 1.0) else (r0 if r.u == 0.0 else r1)
+                if abs(t - u) <= 1e-7:
+                    continue  # the joint of adjacent pieces
+                if any(isinstance(q, Intersection) and abs(q.t - t) <= 1e-9 and abs(q.u - u) <= 1e-9
+                       for q in items):
+                    continue
+                items.append(Intersection(t, u, r.point, r.kind, r.distance))
+            for bx in sub.unresolved:
+                boxes.append(ParameterBox(s0 + bx.t0 * (s1 - s0), s0 + bx.t1 * (s1 - s0),
+                                          r0 + bx.u0 * (r1 - r0), r0 + bx.u1 * (r1 - r0)))
+    items.sort(key=lambda x: x.t if isinstance(x, Intersection) else x.t[0])
+    return IntersectionList(items, boxes)
+
+
+def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float | None = None,
+              budget: int | None = None, on_budget: OnBudget = "raise") -> IntersectionList:
+    """Intersect two rational Bézier curves (or find the self-intersections of one).
+
+    Parameters
+    ----------
+    a, b : RationalBezier
+        The curves. ``b=None`` gives the self-intersections of ``a`` (each double
+        point once, with ``t < u``). Planar curves are intersected by Bézier
+        clipping; when either curve is a space curve the pair goes to the relief
+        perspective intersector (:mod:`relief_cad.space`).
+    tol : float, optional
+        Distance tolerance in model units: a near-miss closer than ``tol`` is a
+        tangent contact at the closest approach, a wider gap is no intersection.
+        Default :func:`relief_cad.tolerances.default_tolerance` of both curves'
+        control points (``1e-9`` of their size plus rounding).
+    budget : int, optional
+        Cap on clipping iterations (default :data:`DEFAULT_BUDGET`).
+    on_budget : {"raise", "return"}
+        What to do when the budget runs out: raise
+        :class:`~relief_cad.errors.BudgetExceededError` (with ``.partial`` and
+        ``.unresolved``) or return the partial list with ``.unresolved`` filled.
+
+    Returns
+    -------
+    IntersectionList
+        :class:`~relief_cad.Intersection` and :class:`~relief_cad.Overlap`
+        objects sorted by ``t``. End point contacts have ``t``/``u`` exactly
+        ``0.0`` or ``1.0``.
+
+    Raises
+    ------
+    InputTypeError
+        If ``a`` or ``b`` is not a :class:`~relief_cad.RationalBezier`.
+    ToleranceError
+        If ``tol`` is not a finite distance > 0.
+    BudgetExceededError
+        If the budget runs out and ``on_budget="raise"``.
+
+    Examples
+    --------
+    >>> from relief_cad.curves import RationalBezier
+    >>> a = RationalBezier([[0, 0], [1, 2], [2, 0]])
+    >>> b = RationalBezier([[0, 0.5], [2, 0.5]])
+    >>> [(round(r.t, 12), round(r.u, 12), r.kind) for r in intersect(a, b)]
+    [(0.146446609407, 0.146446609407, 'crossing'), (0.853553390593, 0.853553390593, 'crossing')]
+    >>> c = RationalBezier([[0, 0], [1, 1], [2, 0]])
+    >>> intersect(c, RationalBezier([[0, 0.5], [2, 0.5]]))[0].kind
+    'tangent'
+    """
+    _check_curve(a, "a")
+    if b is not None:
+        _check_curve(b, "b")
+    _check_on_budget(on_budget)
+    nbudget = _check_budget(budget)
+    if a.dim == 3 or (b is not None and b.dim == 3):
+        from .space import intersect_space  # type: ignore[attr-defined]
+
+        result: IntersectionList = intersect_space(a, b, tol=tol, budget=budget)
+        return result
+    if b is None:
+        ftol = default_tolerance(a.control_points) if tol is None else _check_tol(tol)
+        return _finish(_self_planar(a.control_points, a.weights, ftol, nbudget), on_budget)
+    # tol <= 0 asks the kernel for default_tolerance(a.control_points, b.control_points)
+    ftol = -1.0 if tol is None else _check_tol(tol)
+    return _finish(_planar(a.control_points, a.weights, b.control_points, b.weights, ftol, nbudget),
+                   on_budget)
+
+
+def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
+                   direction: Sequence[float] | FloatArray, *, tol: float | None = None,
+                   budget: int | None = None, on_budget: OnBudget = "raise") -> IntersectionList:
+    """Intersect a planar curve with the infinite line ``point + s * direction``.
+
+    Parameters
+    ----------
+    curve : RationalBezier
+        A planar curve.
+    point, direction : array_like, shape (2,)
+        A point of the line and its (nonzero) direction.
+    tol : float, optional
+        Distance tolerance (default from the curve's control points and ``point``).
+    budget, on_budget
+        As for :func:`intersect`.
+
+    Returns
+    -------
+    IntersectionList
+        Results with ``t`` on the curve and ``u`` the line parameter ``s``
+        (any real number), sorted by ``t``.
+
+    Raises
+    ------
+    InputTypeError
+        If ``curve`` is not a RationalBezier.
+    ShapeError
+        If ``point`` or ``direction`` is not a 2-vector, or the curve is not planar.
+    InvalidInputError
+        If ``direction`` is zero or not finite.
+
+    Examples
+    --------
+    >>> from relief_cad.curves import RationalBezier
+    >>> c = RationalBezier([[0, 0], [1, 2], [2, 0]])
+    >>> [(r.t, r.u) for r in intersect_line(c, (0, 0.5), (1, 0))]
+    [(0.25, 0.25), (0.75, 1.75)]
+    """
+    _check_curve(curve, "curve")
+    if curve.dim != 2:
+        raise ShapeError(f"intersect_line needs a planar curve (dim 2), not dim {curve.dim}")
+    p = np.asarray(point, dtype=np.float64)
+    d = np.asarray(direction, dtype=np.float64)
+    if p.shape != (2,) or d.shape != (2,):
+        raise ShapeError(f"point and direction should have shape (2,), not {p.shape} and {d.shape}")
+    if not (np.all(np.isfinite(p)) and np.all(np.isfinite(d))):
+        raise NonFiniteError("point and direction should be finite")
+    dd = float(d @ d)
+    if dd == 0.0:
+        raise InvalidInputError("direction should be nonzero, not (0, 0)")
+    _check_on_budget(on_budget)
+    nbudget = _check_budget(budget)
+    pts = curve.control_points
+    ftol = default_tolerance(pts, p[None, :]) if tol is None else _check_tol(tol)
+    s = (pts - p) @ d / dd
+    lo = float(min(s.min(), 0.0))
+    hi = float(max(s.max(), 0.0))
+    pad = 0.01 * (hi - lo) + 1.0
+    lo -= pad
+    hi += pad
+    seg = np.array([p + lo * d, p + hi * d])
+    res = _planar(pts, curve.weights, seg, np.ones(2), ftol, nbudget)
+    items: list[Result] = []
+    for r in res:
+        if isinstance(r, Intersection):
+            pt = curve.evaluate(r.t) if r.kind == "crossing" else r.point
+            su = float((np.asarray(pt) - p) @ d / dd)
+            items.append(Intersection(r.t, su, r.point, r.kind, r.distance))
+    return _finish(IntersectionList(items, res.unresolved), on_budget)
+
+
+def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
+                   tol: float | None = None, budget: int | None = None,
+                   on_budget: OnBudget = "raise") -> list[IntersectionList]:
+    """Intersect many curve pairs; planar pairs run in one compiled call.
+
+    Parameters
+    ----------
+    pairs : iterable of (RationalBezier, RationalBezier)
+        The pairs.
+    tol : float, optional
+        One tolerance for every pair; default: each pair's own default tolerance.
+    budget, on_budget
+        As for :func:`intersect` (the budget is per pair).
+
+    Returns
+    -------
+    list of IntersectionList
+        One result list per pair, in order.
+
+    Examples
+    --------
+    >>> from relief_cad.curves import RationalBezier
+    >>> a = RationalBezier([[0, 0], [2, 2]])
+    >>> b = RationalBezier([[0, 2], [2, 0]])
+    >>> [[r.t for r in lst] for lst in intersect_many([(a, b), (b, a)])]
+    [[0.5], [0.5]]
+    """
+    plist = list(pairs)
+    _check_on_budget(on_budget)
+    nbudget = _check_budget(budget)
+    ftol = None if tol is None else _check_tol(tol)
+    planar: list[int] = []
+    out: list[IntersectionList | None] = [None] * len(plist)
+    for k, pr in enumerate(plist):
+        if not isinstance(pr, tuple) or len(pr) != 2:
+            raise InputTypeError(f"pairs[{k}] should be a tuple (a, b), not {type(pr).__name__}")
+        a, b = pr
+        _check_curve(a, f"pairs[{k}][0]")
+        _check_curve(b, f"pairs[{k}][1]")
+        if a.dim == 2 and b.dim == 2:
+            planar.append(k)
+        else:
+            out[k] = intersect(a, b, tol=ftol, budget=nbudget, on_budget=on_budget)
+    if planar:
+        curves: list[RationalBezier] = []
+        for k in planar:
+            curves.extend(plist[k])
+        sizes = np.array([c.degree + 1 for c in curves], dtype=np.int64)
+        offsets = np.zeros(len(curves) + 1, dtype=np.int64)
+        np.cumsum(sizes, out=offsets[1:])
+        pts = np.concatenate([c.control_points for c in curves])
+        wts = np.concatenate([c.weights for c in curves])
+        idx = np.arange(2 * len(planar), dtype=np.int64).reshape(-1, 2)
+        # a tolerance <= 0 asks the kernel for the pair's default_tolerance
+        tols = np.full(len(planar), -1.0 if ftol is None else ftol)
+        res, n = intersect_batch_kernel(pts, wts, offsets, idx, tols, nbudget)
+        res = res[:n]
+        order = np.argsort(res[:, 0], kind="stable")
+        res = res[order]
+        bounds = np.searchsorted(res[:, 0], np.arange(len(planar) + 1))
+        for j, k in enumerate(planar):
+            out[k] = _finish(_rows_to_list(res[bounds[j]:bounds[j + 1]]), on_budget)
+    return [o if o is not None else IntersectionList() for o in out]

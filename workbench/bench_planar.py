@@ -1,0 +1,170 @@
+"""Benchmark: relief_cad's planar intersector against OCCT's ``Geom2dInt_GInter``.
+
+Both run on the SAME curves in one process; OCCT curves are built directly with
+OCP (``Geom2d_BezierCurve`` from ``TColgp_Array1OfPnt2d`` poles and
+``TColStd_Array1OfReal`` weights, wrapped in ``Geom2dAdaptor_Curve``). The OCCT
+timing includes building the intersector and reading every point (what a caller
+pays); the relief_cad timing includes building the result objects.
+
+Run ``python -m workbench.bench_planar`` for the table; :func:`run` returns it as a
+dict.
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+import time
+from typing import Any, Callable
+
+import numpy as np
+
+from relief_cad.curves import RationalBezier
+from relief_cad.intersection import intersect, intersect_many
+
+__all__ = ["cases", "occt_curve", "occt_intersect", "run"]
+
+OCCT_TOL = 1e-9
+
+
+def occt_curve(c: RationalBezier) -> Any:
+    """The OCCT 2D adaptor of a planar :class:`RationalBezier`."""
+    from OCP.Geom2d import Geom2d_BezierCurve
+    from OCP.Geom2dAdaptor import Geom2dAdaptor_Curve
+    from OCP.gp import gp_Pnt2d
+    from OCP.TColgp import TColgp_Array1OfPnt2d
+    from OCP.TColStd import TColStd_Array1OfReal
+
+    pts = c.control_points
+    poles = TColgp_Array1OfPnt2d(1, pts.shape[0])
+    for i, (x, y) in enumerate(pts.tolist()):
+        poles.SetValue(i + 1, gp_Pnt2d(x, y))
+    if c.is_polynomial:
+        geom = Geom2d_BezierCurve(poles)
+    else:
+        w = TColStd_Array1OfReal(1, pts.shape[0])
+        for i, wi in enumerate(c.weights.tolist()):
+            w.SetValue(i + 1, wi)
+        geom = Geom2d_BezierCurve(poles, w)
+    return Geom2dAdaptor_Curve(geom)
+
+
+def occt_intersect(ca: Any, cb: Any, tol: float = OCCT_TOL, min_samples: int | None = None
+                   ) -> list[tuple[float, float]]:
+    """``(t, u)`` of every point OCCT's ``Geom2dInt_GInter`` finds (segments give their ends)."""
+    from OCP.Geom2dInt import Geom2dInt_GInter
+
+    inter = Geom2dInt_GInter()
+    if min_samples is not None:
+        inter.SetMinNbSamples(min_samples)
+    inter.Perform(ca, cb, tol, tol)
+    out = []
+    for i in range(1, inter.NbPoints() + 1):
+        p = inter.Point(i)
+        out.append((p.ParamOnFirst(), p.ParamOnSecond()))
+    for i in range(1, inter.NbSegments() + 1):
+        s = inter.Segment(i)
+        if s.HasFirstPoint():
+            out.append((s.FirstPoint().ParamOnFirst(), s.FirstPoint().ParamOnSecond()))
+        if s.HasLastPoint():
+            out.append((s.LastPoint().ParamOnFirst(), s.LastPoint().ParamOnSecond()))
+    return out
+
+
+def _random_cubic_pairs(n: int, seed: int = 1) -> list[tuple[RationalBezier, RationalBezier]]:
+    rng = np.random.default_rng(seed)
+    return [(RationalBezier(rng.random((4, 2))), RationalBezier(rng.random((4, 2)))) for _ in range(n)]
+
+
+def _arc(cx: float, cy: float, r: float, a0: float, a1: float) -> RationalBezier:
+    """A circle arc (opening < pi) as a rational quadratic."""
+    h = 0.5 * (a1 - a0)
+    m = 0.5 * (a0 + a1)
+    p0 = (cx + r * np.cos(a0), cy + r * np.sin(a0))
+    p2 = (cx + r * np.cos(a1), cy + r * np.sin(a1))
+    p1 = (cx + r * np.cos(m) / np.cos(h), cy + r * np.sin(m) / np.cos(h))
+    return RationalBezier([p0, p1, p2], [1.0, float(np.cos(h)), 1.0])
+
+
+def cases() -> dict[str, list[tuple[RationalBezier, RationalBezier]]]:
+    """The benchmark cases: name -> list of pairs."""
+    out: dict[str, list[tuple[RationalBezier, RationalBezier]]] = {}
+    out["cubic x1"] = [(RationalBezier([[0, 0], [1, 3], [2, -1], [3, 1]]),
+                        RationalBezier([[0, 1.5], [1, -2], [2, 3], [3, -0.5]]))]
+    # two cubics with 9 crossings (zig-zags)
+    out["cubic x9"] = [(RationalBezier([[0, 0], [1, 6], [2, -6], [3, 0]]),
+                        RationalBezier([[0.15, -0.1], [2.85, 6.2], [-0.85, -6.2], [2.2, 0.05]]))]
+    out["arcs x2"] = [(_arc(0, 0, 1, 0.2, 2.6), _arc(0.8, 0.3, 1.1, 0.6, 3.0))]
+    rng = np.random.default_rng(7)
+    xs = np.linspace(0, 1, 8)
+    a7 = RationalBezier(np.column_stack([xs, [0, 1, -1, 1, -1, 1, -1, 0]]))
+    b7 = RationalBezier(np.column_stack([xs[::-1], [0.05, -0.9, 1.1, -0.8, 0.9, -1.0, 0.8, 0.1]]))
+    out["degree 7 x7"] = [(a7, b7)]
+    out["disjoint, boxes overlap"] = [(RationalBezier([[0, 0], [1, 2], [2, 2], [3, 0]]),
+                                       RationalBezier([[0.5, 0.2], [1.2, 1.2], [1.8, 1.2], [2.5, 0.2]]))]
+    out["near-tangent"] = [(RationalBezier([[0, 0], [1, 1], [2, 0]]),
+                            RationalBezier([[0, 0.5 - 1e-7], [2, 0.5 - 1e-7 + 1e-9]]))]
+    out["1000 random cubics"] = _random_cubic_pairs(1000)
+    _ = rng
+    return out
+
+
+def _time(fn: Callable[[], Any], repeat: int) -> float:
+    best = float("inf")
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        best = min(best, time.perf_counter() - t0)
+    return best
+
+
+def _startup() -> dict[str, float]:
+    code = (
+        "import time; t0 = time.perf_counter(); import relief_cad.intersection as I; "
+        "from relief_cad.curves import RationalBezier as R; t1 = time.perf_counter(); "
+        "I.intersect(R([[0, 0], [1, 2], [2, 0]]), R([[0, 1], [2, 0]])); t2 = time.perf_counter(); "
+        "print(t1 - t0, t2 - t1)"
+    )
+    subprocess.run([sys.executable, "-c", code], check=True, capture_output=True)  # warm the cache
+    out = subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, text=True)
+    imp, first = (float(v) for v in out.stdout.split())
+    return {"import_s": imp, "first_call_s": first}
+
+
+def run(repeat: int = 5) -> dict[str, Any]:
+    """Time relief_cad and OCCT on every case; return ``{"cases": [...], ...}``.
+
+    Each case row holds ``us_relief``, ``us_occt`` (µs per pair, best of
+    ``repeat``), ``ratio`` (relief / OCCT), and the number of points each found.
+    """
+    rows = []
+    for name, pairs in cases().items():
+        occ = [(occt_curve(a), occt_curve(b)) for a, b in pairs]
+        n_rel = sum(len(intersect(a, b)) for a, b in pairs)
+        n_occ = sum(len(occt_intersect(ca, cb)) for ca, cb in occ)
+        reps = repeat if len(pairs) > 10 else repeat * 50
+        t_rel = _time(lambda: [intersect(a, b) for a, b in pairs], reps) / len(pairs)
+        t_occ = _time(lambda: [occt_intersect(ca, cb) for ca, cb in occ], reps) / len(pairs)
+        rows.append({"case": name, "pairs": len(pairs), "us_relief": 1e6 * t_rel,
+                     "us_occt": 1e6 * t_occ, "ratio": t_rel / t_occ,
+                     "points_relief": n_rel, "points_occt": n_occ})
+    batch = _random_cubic_pairs(10_000, seed=3)
+    intersect_many(batch[:10])
+    t_batch = _time(lambda: intersect_many(batch), max(1, repeat // 2))
+    out: dict[str, Any] = {"cases": rows, "batch_pairs_per_s": len(batch) / t_batch}
+    out.update(_startup())
+    return out
+
+
+def _main() -> None:
+    r = run()
+    print(f"{'case':28s} {'pairs':>6s} {'relief µs':>10s} {'OCCT µs':>10s} {'ratio':>7s} {'pts rc/occt':>12s}")
+    for row in r["cases"]:
+        print(f"{row['case']:28s} {row['pairs']:6d} {row['us_relief']:10.2f} {row['us_occt']:10.2f} "
+              f"{row['ratio']:7.3f} {row['points_relief']:>6d}/{row['points_occt']:<6d}")
+    print(f"batch of 10,000 random cubic pairs: {r['batch_pairs_per_s']:,.0f} pairs/s")
+    print(f"import: {r['import_s'] * 1e3:.0f} ms, first call (warm cache): {r['first_call_s'] * 1e3:.0f} ms")
+
+
+if __name__ == "__main__":
+    _main()
