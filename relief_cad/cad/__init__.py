@@ -1,1 +1,37 @@
+"""CAD adapters: OCCT (OCP), build123d and CadQuery edges in, native vertices and edges out.
 
+Importing this package imports OCP (the OCCT bindings) but neither build123d nor
+CadQuery; the flavour-specific faces live in :mod:`relief_cad.cad.build123d` and
+:mod:`relief_cad.cad.cadquery`. The core package :mod:`relief_cad` never imports
+this one.
+
+* :func:`segments` -- an edge as exact rational Bézier segments plus parameter maps;
+* :func:`intersect` -- native vertices where edges of shapes meet;
+* :func:`intersections` -- the rich results (:class:`EdgeIntersection`, :class:`EdgeOverlap`);
+* :func:`split` -- edges cut at their intersections, as native edges.
+
+A missing CAD package raises :class:`~relief_cad.errors.AdapterUnavailableError`
+with the install hint ``pip install "relief-cad[cad]"``.
+
+>>> from relief_cad import cad
+>>> sorted(cad.__all__)[:3]
+['EdgeIntersection', 'EdgeOverlap', 'EdgeResult']
+"""
+
+from __future__ import annotations
+
+from .api import intersect, intersections, segments, split
+from .ocp import Segment, edges_of
+from .results import EdgeIntersection, EdgeOverlap, EdgeResult
+
+__all__ = [
+    "EdgeIntersection",
+    "EdgeOverlap",
+    "EdgeResult",
+    "Segment",
+    "edges_of",
+    "intersect",
+    "intersections",
+    "segments",
+    "split",
+]

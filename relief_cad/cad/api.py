@@ -1,0 +1,573 @@
+"""Intersect CAD shapes: edges in, native vertices, rich results and split edges out.
+
+The adapters convert; they do not compute. Every edge is converted exactly to
+rational Bézier segments (:func:`relief_cad.cad.ocp.edge_segments`), segment
+pairs whose boxes overlap go to :func:`relief_cad.intersect`, and the answers
+are mapped back to the edges' own OCCT parameters and to native geometry.
+
+Inputs ``a`` and ``b`` may be edges, wires, faces, solids, compounds or lists of
+them, as build123d shapes, CadQuery shapes / ``Workplane`` objects or raw
+``TopoDS_Shape``; the results come back in the flavour of ``a``.
+
+Planar or space: when the control points of every edge taking part lie in one
+plane (within ``tol / 1000``), the segments are mapped into a 2D frame of that
+plane (an exact isometry for planes parallel to XY, an orthonormal frame
+otherwise; affine, so parameters are unchanged) and intersected by the planar
+intersector; otherwise each pair is checked for a common plane and, failing
+that, intersected in space.
+
+Default tolerance (``tol=None``): the largest OCCT tolerance
+(``BRep_Tool.Tolerance``) of the edges taking part, when that is meaningful,
+i.e. at most ``1e-3`` of the diagonal of their joint bounding box; otherwise
+:func:`relief_cad.tolerances.default_tolerance` of all their control points.
+
+>>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+>>> from OCP.gp import gp_Pnt
+>>> a = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(2, 2, 0)).Edge()
+>>> b = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 2, 0), gp_Pnt(2, 0, 0)).Edge()
+>>> [(round(r.t, 12), r.point, r.kind) for r in intersections(a, b)]
+[(1.414213562373, (1.0, 1.0, 0.0), 'crossing')]
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from ..curves import RationalBezier
+from ..errors import InvalidInputError
+from ..results import Intersection, Overlap
+from ..tolerances import default_tolerance
+from . import ocp
+from .results import EdgeIntersection, EdgeOverlap, EdgeResult
+
+__all__ = ["intersect", "intersections", "segments", "split", "flavour_of"]
+
+_PLANE_FRACTION = 1e-3  # control points within tol * this of a plane count as coplanar
+_MEANINGFUL_FRACTION = 1e-3  # an OCCT tolerance above this fraction of the size is not used
+
+
+def segments(edge: Any, *, approximate: bool = True) -> list[ocp.Segment]:
+    """Convert an edge to rational Bézier segments with exact maps to its own parameter.
+
+    Parameters
+    ----------
+    edge : build123d Edge, CadQuery Edge or TopoDS_Edge
+        The edge (its location applied; its orientation does not change parameters).
+    approximate : bool, keyword-only
+        Allow OCCT approximation of curve types without an exact conversion
+        (flagged ``approximate=True``); if False they raise ``UnsupportedCurveError``.
+
+    Returns
+    -------
+    list of Segment
+        See :class:`relief_cad.cad.ocp.Segment` (``curve``, ``t0``, ``t1``,
+        ``edge_param(s)``, ``segment_param(t)``, ``approximate``).
+
+    Examples
+    --------
+    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+    >>> from OCP.gp import gp_Ax2, gp_Circ, gp_Dir, gp_Pnt
+    >>> circle = BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 1.0)).Edge()
+    >>> [(s.curve.degree, round(s.t1, 6)) for s in segments(circle)]
+    [(2, 1.570796), (2, 3.141593), (2, 4.712389), (2, 6.283185)]
+    """
+    return ocp.edge_segments(edge, approximate=approximate)
+
+
+# --------------------------------------------------------------------------- flavours
+def flavour_of(obj: Any) -> str:
+    """Return ``"build123d"``, ``"cadquery"`` or ``"ocp"``: the library an input comes from.
+
+    Examples
+    --------
+    >>> flavour_of([])
+    'ocp'
+    """
+    if isinstance(obj, (list, tuple)):
+        return flavour_of(obj[0]) if obj else "ocp"
+    mod = type(obj).__module__
+    if mod.startswith("build123d"):
+        return "build123d"
+    if mod.startswith("cadquery"):
+        return "cadquery"
+    return "ocp"
+
+
+def _wrap_vertices(vertices: list[Any], flavour: str) -> Any:
+    if flavour == "build123d":
+        from .build123d import wrap_vertices
+
+        return wrap_vertices(vertices)
+    if flavour == "cadquery":
+        from .cadquery import wrap_vertices as cq_wrap_vertices
+
+        return cq_wrap_vertices(vertices)
+    return vertices
+
+
+def _wrap_edge(edge: Any, flavour: str) -> Any:
+    if flavour == "build123d":
+        from .build123d import wrap_edge
+
+        return wrap_edge(edge)
+    if flavour == "cadquery":
+        from .cadquery import wrap_edge as cq_wrap_edge
+
+        return cq_wrap_edge(edge)
+    return edge
+
+
+def _wrap_edges(edges: list[Any], flavour: str) -> Any:
+    if flavour == "build123d":
+        from .build123d import wrap_edges
+
+        return wrap_edges(edges)
+    return [_wrap_edge(e, flavour) for e in edges]
+
+
+# --------------------------------------------------------------------------- preparation
+@dataclass
+class _EdgeInfo:
+    index: int
+    edge: Any  # TopoDS_Edge
+    segs: list[ocp.Segment]
+    boxes: np.ndarray  # (nseg, 2, 3): lo, hi of every segment's control points
+    lo: np.ndarray
+    hi: np.ndarray
+    tolerance: float
+    approximate: bool
+    first: float
+    last: float
+    vertices: tuple[Any, Any]  # first / last TopoDS_Vertex (may be null)
+    curves2d: list[RationalBezier] | None = None
+
+
+def _prepare(shape: Any) -> list[_EdgeInfo]:
+    from OCP.BRep import BRep_Tool
+    from OCP.TopExp import TopExp
+
+    infos = []
+    for index, edge in enumerate(ocp.edges_of(shape)):
+        if BRep_Tool.Degenerated_s(edge):
+            continue
+        segs = ocp.edge_segments(edge)
+        boxes = np.empty((len(segs), 2, 3))
+        for k, s in enumerate(segs):
+            pts = s.curve.control_points
+            boxes[k, 0] = pts.min(axis=0)
+            boxes[k, 1] = pts.max(axis=0)
+        infos.append(
+            _EdgeInfo(
+                index=index,
+                edge=edge,
+                segs=segs,
+                boxes=boxes,
+                lo=boxes[:, 0].min(axis=0),
+                hi=boxes[:, 1].max(axis=0),
+                tolerance=float(BRep_Tool.Tolerance_s(edge)),
+                approximate=any(s.approximate for s in segs),
+                first=segs[0].t0,
+                last=segs[-1].t1,
+                vertices=(TopExp.FirstVertex_s(edge), TopExp.LastVertex_s(edge)),
+            )
+        )
+    return infos
+
+
+def _all_points(infos: list[_EdgeInfo]) -> np.ndarray:
+    return np.vstack([s.curve.control_points for e in infos for s in e.segs])
+
+
+def _default_tol(infos: list[_EdgeInfo]) -> float:
+    pts = _all_points(infos)
+    size = float(np.linalg.norm(pts.max(axis=0) - pts.min(axis=0)))
+    occt = max(e.tolerance for e in infos)
+    if math.isfinite(occt) and 0.0 < occt <= _MEANINGFUL_FRACTION * size:
+        return occt
+    return default_tolerance(pts)
+
+
+def _check_tol(tol: Any) -> float:
+    try:
+        value = float(tol)
+    except (TypeError, ValueError):
+        value = float("nan")
+    if not (math.isfinite(value) and value > 0.0):
+        from ..errors import ToleranceError
+
+        raise ToleranceError(f"tol should be a finite distance > 0 (model units), not {tol!r}")
+    return value
+
+
+def _to_plane(curve: RationalBezier, frame: np.ndarray) -> RationalBezier:
+    h = curve.homogeneous
+    h2 = np.empty((h.shape[0], 3))
+    h2[:, :2] = h @ frame.T
+    h2[:, 2] = h[:, 3]
+    return ocp._make_curve(h2)
+
+
+def _set_plane(infos: list[_EdgeInfo], frame: np.ndarray | None) -> None:
+    for e in infos:
+        e.curves2d = None if frame is None else [_to_plane(s.curve, frame) for s in e.segs]
+
+
+# --------------------------------------------------------------------------- the core loop
+@dataclass
+class _Raw:
+    ea: _EdgeInfo
+    eb: _EdgeInfo
+    t: Any  # float or (t0, t1)
+    u: Any
+    point: tuple[float, float, float]
+    kind: str
+    distance: float
+
+
+def _intersect_curves(ca: RationalBezier, cb: RationalBezier | None, tol: float) -> list[Any]:
+    import relief_cad
+
+    core: Any = getattr(relief_cad, "intersect", None)
+    if core is None:  # pragma: no cover - until the package exports it
+        from ..intersection import intersect as core
+    return list(core(ca, cb, tol=tol))
+
+
+def _edge_pair(ea: _EdgeInfo, eb: _EdgeInfo, same: bool, tol: float, planar: bool) -> list[_Raw]:
+    """All raw results of one edge pair (segment pairs pruned by boxes)."""
+    if not planar:
+        frame = ocp.planar_frame(
+            np.vstack([s.curve.control_points for s in (ea.segs + ([] if same else eb.segs))]),
+            tol * _PLANE_FRACTION,
+        )
+    out: list[_Raw] = []
+    boxes_a, boxes_b = ea.boxes, eb.boxes
+    for i, sa in enumerate(ea.segs):
+        lo_a = boxes_a[i, 0] - tol
+        hi_a = boxes_a[i, 1] + tol
+        hit = np.all((boxes_b[:, 0] <= hi_a) & (boxes_b[:, 1] >= lo_a), axis=1)
+        for jj in np.nonzero(hit)[0]:
+            j = int(jj)
+            if same and j < i:
+                continue
+            sb = eb.segs[j]
+            if planar:
+                ca = ea.curves2d[i]  # type: ignore[index]
+                cb = eb.curves2d[j]  # type: ignore[index]
+            elif frame is not None:
+                ca, cb = _to_plane(sa.curve, frame), _to_plane(sb.curve, frame)
+            else:
+                ca, cb = sa.curve, sb.curve
+            found = _intersect_curves(ca, None if (same and i == j) else cb, tol)
+            for r in found:
+                if isinstance(r, Overlap):
+                    t = (sa.edge_param(r.t[0]), sa.edge_param(r.t[1]))
+                    u = (sb.edge_param(r.u[0]), sb.edge_param(r.u[1]))
+                    p = sa.curve.evaluate(r.t[0])
+                    out.append(_Raw(ea, eb, t, u, tuple(map(float, p)), "overlap", 0.0))  # type: ignore[arg-type]
+                elif isinstance(r, Intersection):
+                    pa = sa.curve.evaluate(r.t)
+                    pb = sb.curve.evaluate(r.u)
+                    point = 0.5 * (pa + pb)
+                    out.append(
+                        _Raw(ea, eb, sa.edge_param(r.t), sb.edge_param(r.u),
+                             (float(point[0]), float(point[1]), float(point[2])), r.kind,
+                             float(np.linalg.norm(pa - pb)))
+                    )
+    return out
+
+
+def _is_same_vertex(v: Any, w: Any) -> bool:
+    return bool(not v.IsNull() and not w.IsNull() and v.IsSame(w))
+
+
+def _at_end(e: _EdgeInfo, t: float, which: int, ptol: float) -> bool:
+    return abs(t - (e.first if which == 0 else e.last)) <= ptol * max(1.0, abs(e.last - e.first))
+
+
+def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> list[_Raw]:
+    """Merge overlaps, drop points inside overlaps, duplicates and trivial contacts of one edge pair."""
+    if not raws:
+        return raws
+    ea, eb = raws[0].ea, raws[0].eb
+    ptol = 1e-9
+    overlaps = sorted((r for r in raws if r.kind == "overlap"), key=lambda r: r.t[0])
+    merged: list[_Raw] = []
+    for r in overlaps:
+        t0, t1 = r.t
+        u0, u1 = r.u
+        if t0 > t1:
+            t0, t1, u0, u1 = t1, t0, u1, u0
+        r = _Raw(ea, eb, (t0, t1), (u0, u1), r.point, "overlap", 0.0)
+        if merged:
+            prev = merged[-1]
+            gap_t = r.t[0] - prev.t[1]
+            if gap_t <= ptol * max(1.0, abs(ea.last - ea.first)) and _close_params(
+                prev.u[1], r.u[0], eb, ptol
+            ):
+                merged[-1] = _Raw(ea, eb, (prev.t[0], max(prev.t[1], r.t[1])), (prev.u[0], r.u[1]),
+                                  prev.point, "overlap", 0.0)
+                continue
+        merged.append(r)
+    points: list[_Raw] = []
+    for r in sorted((r for r in raws if r.kind != "overlap"), key=lambda r: r.distance):
+        t, u = r.t, r.u
+        if same:
+            # the same point of one edge (a segment joint), or the closing point of a closed edge
+            span = max(1.0, abs(ea.last - ea.first))
+            if abs(t - u) <= ptol * span:
+                continue
+            if _is_same_vertex(ea.vertices[0], ea.vertices[1]) and (
+                (_at_end(ea, t, 0, ptol) and _at_end(ea, u, 1, ptol))
+                or (_at_end(ea, t, 1, ptol) and _at_end(ea, u, 0, ptol))
+            ):
+                continue
+            if t > u:
+                r = _Raw(ea, eb, u, t, r.point, r.kind, r.distance)
+        elif self_mode and _shared_vertex_contact(r, tol):
+            continue
+        if any(_inside(o, r, tol) for o in merged):
+            continue
+        if any(_near(p.point, r.point, tol) for p in points):
+            continue
+        points.append(r)
+    return merged + points
+
+
+def _close_params(u_prev: float, u_next: float, eb: _EdgeInfo, ptol: float) -> bool:
+    return abs(u_prev - u_next) <= ptol * max(1.0, abs(eb.last - eb.first))
+
+
+def _near(p: tuple[float, float, float], q: tuple[float, float, float], tol: float) -> bool:
+    return math.dist(p, q) <= tol
+
+
+def _inside(o: _Raw, r: _Raw, tol: float) -> bool:
+    slack = 1e-9 * max(1.0, abs(o.ea.last - o.ea.first))
+    if o.t[0] - slack <= r.t <= o.t[1] + slack:
+        return True
+    ends = [ocp.edge_value(o.ea.edge, o.t[0]), ocp.edge_value(o.ea.edge, o.t[1])]
+    return any(_near(e, r.point, tol) for e in ends)
+
+
+def _shared_vertex_contact(r: _Raw, tol: float) -> bool:
+    """True for the contact at a vertex joining two distinct edges (self-intersection mode)."""
+    from OCP.BRep import BRep_Tool
+
+    ea, eb = r.ea, r.eb
+    for va in ea.vertices:
+        for vb in eb.vertices:
+            if _is_same_vertex(va, vb):
+                p = BRep_Tool.Pnt_s(va).Coord()
+                if math.dist(p, r.point) <= max(tol, BRep_Tool.Tolerance_s(va)):
+                    return True
+    return False
+
+
+def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw]]:
+    flavour = flavour_of(a)
+    infos_a = _prepare(a)
+    if b is None:
+        infos_b = infos_a
+    else:
+        infos_b = _prepare(b)
+    if not infos_a or (b is not None and not infos_b):
+        which = "a" if not infos_a else "b"
+        raise InvalidInputError(f"expected shape {which} to have at least one edge with a curve; it has none")
+    everyone = infos_a if b is None else infos_a + infos_b
+    ftol = _default_tol(everyone) if tol is None else _check_tol(tol)
+    frame = ocp.planar_frame(_all_points(everyone), ftol * _PLANE_FRACTION)
+    _set_plane(everyone, frame)
+    planar = frame is not None
+    raws: list[_Raw] = []
+    for ia, ea in enumerate(infos_a):
+        for ib, eb in enumerate(infos_b):
+            if b is None and ib < ia:
+                continue
+            if np.any(ea.lo - ftol > eb.hi) or np.any(eb.lo - ftol > ea.hi):
+                continue
+            same = b is None and ia == ib
+            pair = _edge_pair(ea, eb, same, ftol, planar)
+            raws.extend(_clean_pair(pair, same, b is None, ftol))
+    return flavour, raws
+
+
+# --------------------------------------------------------------------------- public API
+def intersections(a: Any, b: Any = None, *, tol: float | None = None) -> list[EdgeResult]:
+    """Intersect the edges of two shapes (or of one shape with itself): the rich results.
+
+    Parameters
+    ----------
+    a : shape
+        Edges, wires, faces or any shapes (build123d, CadQuery or raw OCP), or a
+        list of them. Degenerated edges (poles) are skipped.
+    b : shape, optional
+        The other shape. ``None``: the self-intersections of ``a``'s edges (an edge
+        crossing itself, distinct edges crossing each other), without the shared
+        vertices that join consecutive edges.
+    tol : float, optional
+        Distance tolerance in model units (see the module docstring for the default).
+
+    Returns
+    -------
+    list of EdgeIntersection and EdgeOverlap
+        Sorted by ``(index_a, index_b, t)``. Parameters are the edges' own; a
+        contact found by two segment pairs (a B-spline knot, a shared end) is
+        reported once per edge pair; points inside an overlap are absorbed by it.
+
+    Raises
+    ------
+    InputTypeError
+        If an input is not a shape.
+    InvalidInputError
+        If a shape has no edge with a curve (an empty compound, a vertex).
+    DegenerateCurveError
+        If an edge has zero length.
+
+    Examples
+    --------
+    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakePolygon
+    >>> from OCP.gp import gp_Pnt
+    >>> square = BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0), gp_Pnt(1, 1, 0),
+    ...                                     gp_Pnt(0, 1, 0), True).Wire()
+    >>> intersections(square)
+    []
+    """
+    flavour, raws = _run(a, b, tol)
+    out: list[EdgeResult] = []
+    natives: dict[int, Any] = {}
+
+    def native(info: _EdgeInfo) -> Any:
+        if id(info) not in natives:
+            natives[id(info)] = _wrap_edge(info.edge, flavour)
+        return natives[id(info)]
+
+    for r in raws:
+        ea, eb = r.ea, r.eb
+        native_a = native(ea)
+        native_b = native(eb)
+        approx = ea.approximate or eb.approximate
+        if r.kind == "overlap":
+            common = _wrap_edge(ocp.trim_edge(ea.edge, r.t[0], r.t[1]), flavour)
+            out.append(EdgeOverlap(ea.index, eb.index, native_a, native_b, r.t, r.u, common,
+                                   approximate=approx))
+        else:
+            out.append(EdgeIntersection(ea.index, eb.index, native_a, native_b, r.t, r.u, r.point,
+                                        r.kind, r.distance, approx))  # type: ignore[arg-type]
+    out.sort(key=lambda r: (r.index_a, r.index_b, r.t if isinstance(r, EdgeIntersection) else r.t[0]))
+    return out
+
+
+def intersect(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
+    """Intersect the edges of two shapes (or one shape with itself) and return native vertices.
+
+    Parameters
+    ----------
+    a, b, tol
+        As for :func:`intersections`.
+
+    Returns
+    -------
+    build123d ShapeList[Vertex], list of CadQuery Vertex, or list of TopoDS_Vertex
+        In the flavour of ``a``: one vertex per distinct intersection point
+        (points closer than ``tol`` merged); an overlap contributes its two end
+        points.
+
+    Examples
+    --------
+    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+    >>> from OCP.BRep import BRep_Tool
+    >>> from OCP.gp import gp_Pnt
+    >>> a = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(2, 2, 0)).Edge()
+    >>> b = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 2, 0), gp_Pnt(2, 0, 0)).Edge()
+    >>> [BRep_Tool.Pnt_s(v).Coord() for v in intersect(a, b)]
+    [(1.0, 1.0, 0.0)]
+    >>> c = BRepBuilderAPI_MakeEdge(gp_Pnt(5, 5, 0), gp_Pnt(6, 5, 0)).Edge()
+    >>> intersect(a, c)
+    []
+    """
+    flavour, raws = _run(a, b, tol)
+    ftol = tol
+    if ftol is None:
+        infos = [r.ea for r in raws] + [r.eb for r in raws]
+        ftol = _default_tol(infos) if infos else 0.0
+    points: list[tuple[float, float, float]] = []
+    for r in sorted(raws, key=lambda r: (r.ea.index, r.eb.index, r.t if r.kind != "overlap" else r.t[0])):
+        if r.kind == "overlap":
+            cands = [ocp.edge_value(r.ea.edge, r.t[0]), ocp.edge_value(r.ea.edge, r.t[1])]
+        else:
+            cands = [r.point]
+        for p in cands:
+            if not any(math.dist(p, q) <= ftol for q in points):
+                points.append(p)
+    return _wrap_vertices([ocp.make_vertex(p) for p in points], flavour)
+
+
+def split(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
+    """Split the edges of ``a`` where they meet ``b`` (or each other) and return the pieces.
+
+    Parameters
+    ----------
+    a : shape
+        The shape whose edges are split.
+    b : shape, optional
+        The cutting shape (its edges are not split). ``None``: ``a``'s edges are
+        split where they cross each other or themselves.
+    tol : float, optional
+        As for :func:`intersections`.
+
+    Returns
+    -------
+    list of native edges
+        In the flavour of ``a`` (a build123d ``ShapeList[Edge]``): for every edge
+        of ``a`` in :func:`~relief_cad.cad.ocp.edges_of` order, its pieces in
+        increasing parameter, on the same curve, keeping location and
+        orientation; edges that are not cut come back unchanged. Overlaps cut at
+        their ends.
+
+    Examples
+    --------
+    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+    >>> from OCP.BRep import BRep_Tool
+    >>> from OCP.gp import gp_Pnt
+    >>> a = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(4, 0, 0)).Edge()
+    >>> b = BRepBuilderAPI_MakeEdge(gp_Pnt(1, -1, 0), gp_Pnt(1, 1, 0)).Edge()
+    >>> [BRep_Tool.Range_s(e) for e in split(a, b)]
+    [(0.0, 1.0), (1.0, 4.0)]
+    """
+    flavour, raws = _run(a, b, tol)
+    infos = _prepare(a)
+    ftol = _default_tol(infos) if tol is None else _check_tol(tol)
+    cuts: dict[int, list[float]] = {}
+    for r in raws:
+        params_a = list(r.t) if r.kind == "overlap" else [r.t]
+        cuts.setdefault(r.ea.index, []).extend(params_a)
+        if b is None:
+            params_b = list(r.u) if r.kind == "overlap" else [r.u]
+            cuts.setdefault(r.eb.index, []).extend(params_b)
+    pieces: list[Any] = []
+    by_index = {e.index: e for e in infos}
+    for index, edge in enumerate(ocp.edges_of(a)):
+        info = by_index.get(index)
+        if info is None or index not in cuts:
+            pieces.append(edge)
+            continue
+        params = [info.first]
+        last_point = ocp.edge_value(edge, info.first)
+        for t in sorted(cuts[index]):
+            p = ocp.edge_value(edge, t)
+            if info.first < t < info.last and math.dist(p, last_point) > ftol and math.dist(
+                p, ocp.edge_value(edge, info.last)
+            ) > ftol:
+                params.append(t)
+                last_point = p
+        params.append(info.last)
+        if len(params) == 2:
+            pieces.append(edge)
+            continue
+        pieces.extend(ocp.trim_edge(edge, t0, t1) for t0, t1 in zip(params, params[1:], strict=False))
+    return _wrap_edges(pieces, flavour)

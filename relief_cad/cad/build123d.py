@@ -1,0 +1,109 @@
+"""build123d face of the adapters: unwrap ``.wrapped``, call :mod:`relief_cad.cad.api`, rewrap.
+
+Plain functions on shapes, so they work in algebra mode and inside
+``BuildLine`` / ``BuildSketch`` / ``BuildPart`` contexts alike (they do not add
+anything to the active builder; pass the vertices to ``Locations`` to place
+objects at them).
+
+>>> import build123d as bd
+>>> a = bd.Edge.make_line((0, 0), (2, 2))
+>>> b = bd.Edge.make_line((0, 2), (2, 0))
+>>> [tuple(v) for v in intersect(a, b)]
+[(1.0, 1.0, 0.0)]
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ..errors import AdapterUnavailableError
+
+try:
+    import build123d as _bd
+except ImportError as exc:  # pragma: no cover - exercised only without build123d
+    raise AdapterUnavailableError(
+        'relief_cad.cad.build123d needs build123d; install it with: pip install "relief-cad[cad]"'
+    ) from exc
+
+from . import api
+from .results import EdgeResult
+
+__all__ = ["intersect", "intersections", "split", "wrap_edge", "wrap_edges", "wrap_vertices"]
+
+
+def wrap_vertices(vertices: list[Any]) -> Any:
+    """Return ``TopoDS_Vertex`` objects as a build123d ``ShapeList[Vertex]``.
+
+    Examples
+    --------
+    >>> wrap_vertices([])
+    []
+    """
+    return _bd.ShapeList([_bd.Vertex(v) for v in vertices])
+
+
+def wrap_edge(edge: Any) -> Any:
+    """Return a ``TopoDS_Edge`` as a build123d ``Edge``.
+
+    Examples
+    --------
+    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+    >>> from OCP.gp import gp_Pnt
+    >>> wrap_edge(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0)).Edge()).length
+    1.0
+    """
+    return _bd.Edge(edge)
+
+
+def wrap_edges(edges: list[Any]) -> Any:
+    """Return ``TopoDS_Edge`` objects as a build123d ``ShapeList[Edge]``.
+
+    Examples
+    --------
+    >>> wrap_edges([])
+    []
+    """
+    return _bd.ShapeList([_bd.Edge(e) for e in edges])
+
+
+def intersect(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
+    """Return the intersection points of build123d shapes as a ``ShapeList[Vertex]``.
+
+    See :func:`relief_cad.cad.api.intersect` (the result is always build123d,
+    whatever the input flavour).
+
+    Examples
+    --------
+    >>> import build123d as bd
+    >>> intersect(bd.Edge.make_circle(1.0), bd.Edge.make_line((5, 5), (6, 6)))
+    []
+    """
+    return wrap_vertices([v.wrapped for v in _as_list(api.intersect(a, b, tol=tol))])
+
+
+def intersections(a: Any, b: Any = None, *, tol: float | None = None) -> list[EdgeResult]:
+    """Return the rich results (:class:`~relief_cad.cad.results.EdgeIntersection`...) of build123d shapes.
+
+    Examples
+    --------
+    >>> import build123d as bd
+    >>> [r.kind for r in intersections(bd.Edge.make_line((0, 0), (2, 0)), bd.Edge.make_circle(1.0))]
+    ['crossing']
+    """
+    return api.intersections(a, b, tol=tol)
+
+
+def split(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
+    """Split the edges of ``a`` at ``b`` (or at each other) and return a ``ShapeList[Edge]``.
+
+    Examples
+    --------
+    >>> import build123d as bd
+    >>> len(split(bd.Edge.make_line((-2, 0), (2, 0)), bd.Edge.make_circle(1.0)))
+    3
+    """
+    return wrap_edges([e.wrapped if hasattr(e, "wrapped") else e for e in api.split(a, b, tol=tol)])
+
+
+def _as_list(vertices: Any) -> list[Any]:
+    return [v if hasattr(v, "wrapped") else _bd.Vertex(v) for v in vertices]

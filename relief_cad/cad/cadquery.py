@@ -1,0 +1,183 @@
+"""CadQuery face of the adapters and a ``Workplane`` plugin in CadQuery's documented style.
+
+Nothing is patched at import. Two ways to use the plugin:
+
+* ``Workplane.invoke``: ``wp.invoke(intersection_points(other))`` replaces the
+  stack by the intersection vertices of the objects on it with ``other`` (or
+  with each other when ``other`` is None), so the chain goes on
+  (``.circle(0.1)`` at every point, ``.vertices()``...);
+* :func:`register` adds the same as a ``Workplane`` method (opt-in, named
+  ``intersection_points`` unless told otherwise).
+
+>>> import cadquery as cq
+>>> a = cq.Workplane("XY").moveTo(-2, 0).lineTo(2, 0)
+>>> b = cq.Workplane("XY").circle(1.0)
+>>> [tuple(round(c, 12) for c in v.toTuple()) for v in a.invoke(intersection_points(b)).vals()]
+[(-1.0, 0.0, 0.0), (1.0, 0.0, 0.0)]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from ..errors import AdapterUnavailableError, InputTypeError, InvalidInputError
+
+try:
+    import cadquery as _cq
+except ImportError as exc:  # pragma: no cover - exercised only without CadQuery
+    raise AdapterUnavailableError(
+        'relief_cad.cad.cadquery needs CadQuery; install it with: pip install "relief-cad[cad]"'
+    ) from exc
+
+from . import api
+from .results import EdgeResult
+
+__all__ = [
+    "intersect",
+    "intersection_points",
+    "intersections",
+    "register",
+    "split",
+    "wrap_edge",
+    "wrap_vertices",
+]
+
+
+def wrap_vertices(vertices: list[Any]) -> list[Any]:
+    """Return ``TopoDS_Vertex`` objects as CadQuery ``Vertex`` objects.
+
+    Examples
+    --------
+    >>> wrap_vertices([])
+    []
+    """
+    return [_cq.Vertex(v) for v in vertices]
+
+
+def wrap_edge(edge: Any) -> Any:
+    """Return a ``TopoDS_Edge`` as a CadQuery ``Edge``.
+
+    Examples
+    --------
+    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+    >>> from OCP.gp import gp_Pnt
+    >>> wrap_edge(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0)).Edge()).Length()
+    1.0
+    """
+    return _cq.Edge(edge)
+
+
+def _shapes(obj: Any) -> Any:
+    """The shapes of a Workplane's stack (or the object itself)."""
+    if isinstance(obj, _cq.Workplane):
+        vals = [v for v in obj.vals() if isinstance(v, _cq.Shape)]
+        if not vals:
+            raise InvalidInputError("expected a Workplane with shapes on its stack; it holds none")
+        return vals if len(vals) > 1 else vals[0]
+    return obj
+
+
+def intersect(a: Any, b: Any = None, *, tol: float | None = None) -> list[Any]:
+    """Return the intersection points of CadQuery shapes or Workplanes as ``Vertex`` objects.
+
+    See :func:`relief_cad.cad.api.intersect`.
+
+    Examples
+    --------
+    >>> import cadquery as cq
+    >>> intersect(cq.Edge.makeCircle(1.0), cq.Edge.makeLine(cq.Vector(5, 5, 0), cq.Vector(6, 6, 0)))
+    []
+    """
+    return [_cq.Vertex(v) if not isinstance(v, _cq.Shape) else v
+            for v in api.intersect(_shapes(a), None if b is None else _shapes(b), tol=tol)]
+
+
+def intersections(a: Any, b: Any = None, *, tol: float | None = None) -> list[EdgeResult]:
+    """Return the rich results for CadQuery shapes or Workplanes.
+
+    Examples
+    --------
+    >>> import cadquery as cq
+    >>> line = cq.Edge.makeLine(cq.Vector(0, 0, 0), cq.Vector(2, 0, 0))
+    >>> [r.kind for r in intersections(line, cq.Edge.makeCircle(1.0))]
+    ['crossing']
+    """
+    return api.intersections(_shapes(a), None if b is None else _shapes(b), tol=tol)
+
+
+def split(a: Any, b: Any = None, *, tol: float | None = None) -> list[Any]:
+    """Split the edges of ``a`` at ``b`` (or at each other); CadQuery ``Edge`` pieces.
+
+    Examples
+    --------
+    >>> import cadquery as cq
+    >>> line = cq.Edge.makeLine(cq.Vector(-2, 0, 0), cq.Vector(2, 0, 0))
+    >>> len(split(line, cq.Edge.makeCircle(1.0)))
+    3
+    """
+    return [e if isinstance(e, _cq.Shape) else _cq.Edge(e)
+            for e in api.split(_shapes(a), None if b is None else _shapes(b), tol=tol)]
+
+
+def intersection_points(other: Any = None, *, tol: float | None = None) -> Callable[[Any], Any]:
+    """Return a callable for ``Workplane.invoke`` putting intersection vertices on the stack.
+
+    Parameters
+    ----------
+    other : Workplane or CadQuery shape, optional
+        What to intersect the stack's objects with; ``None``: the stack's objects
+        with each other (self-intersections, shared vertices excluded).
+    tol : float, optional
+        Distance tolerance (model units); see :func:`relief_cad.cad.api.intersections`.
+
+    Returns
+    -------
+    callable
+        ``f(workplane) -> Workplane`` whose stack holds one ``Vertex`` per point
+        (the workplane's plane is kept, so ``.circle(r)`` draws at every point).
+
+    Examples
+    --------
+    >>> import cadquery as cq
+    >>> wp = cq.Workplane("XY").moveTo(0, -2).lineTo(0, 2)
+    >>> wp.invoke(intersection_points(cq.Workplane("XY").rect(1, 1))).size()
+    2
+    """
+
+    def _apply(wp: Any) -> Any:
+        if not isinstance(wp, _cq.Workplane):
+            raise InputTypeError(f"expected a cadquery Workplane; received {type(wp).__name__}")
+        return wp.newObject(intersect(wp, other, tol=tol))
+
+    return _apply
+
+
+def register(name: str = "intersection_points") -> None:
+    """Add ``Workplane.<name>(other=None, *, tol=None)`` (opt-in; nothing is patched at import).
+
+    Raises
+    ------
+    InvalidInputError
+        If ``Workplane`` already has an attribute of that name not added by relief_cad.
+
+    Examples
+    --------
+    >>> import cadquery as cq
+    >>> register()
+    >>> cq.Workplane("XY").moveTo(-2, 0).lineTo(2, 0).intersection_points(
+    ...     cq.Workplane("XY").circle(1.0)).size()
+    2
+    """
+    existing = getattr(_cq.Workplane, name, None)
+    if existing is not None and not getattr(existing, "_relief_cad_plugin", False):
+        raise InvalidInputError(
+            f"cadquery.Workplane already has an attribute {name!r}; choose another name for register()"
+        )
+
+    def method(self: Any, other: Any = None, *, tol: float | None = None) -> Any:
+        return intersection_points(other, tol=tol)(self)
+
+    method.__doc__ = intersection_points.__doc__
+    method._relief_cad_plugin = True  # type: ignore[attr-defined]
+    setattr(_cq.Workplane, name, method)
