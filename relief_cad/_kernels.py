@@ -548,25 +548,32 @@ def _frame(PA, PB):  # type: ignore[no-untyped-def]
 
 
 @njit(cache=True)
+def _bbox_update(P, box):  # type: ignore[no-untyped-def]
+    """Grow ``box = [xlo, xhi, ylo, yhi, max|coord|]`` by the points ``P``."""
+    for i in range(P.shape[0]):
+        x = P[i, 0]
+        y = P[i, 1]
+        box[0] = min(box[0], x)
+        box[1] = max(box[1], x)
+        box[2] = min(box[2], y)
+        box[3] = max(box[3], y)
+        box[4] = max(box[4], abs(x), abs(y))
+
+
+@njit(cache=True)
 def _default_tol(PA, PB):  # type: ignore[no-untyped-def]
     """:func:`relief_cad.tolerances.default_tolerance` of both control polygons."""
-    xlo = math.inf
-    xhi = -math.inf
-    ylo = math.inf
-    yhi = -math.inf
-    big = 0.0
-    for P in (PA, PB):
-        for i in range(P.shape[0]):
-            x = P[i, 0]
-            y = P[i, 1]
-            xlo = min(xlo, x)
-            xhi = max(xhi, x)
-            ylo = min(ylo, y)
-            yhi = max(yhi, y)
-            big = max(big, abs(x), abs(y))
-    dx = xhi - xlo
-    dy = yhi - ylo
-    tol = 1e-9 * math.sqrt(dx * dx + dy * dy) + 64.0 * _EPS * big
+    box = np.empty(5)
+    box[0] = math.inf
+    box[1] = -math.inf
+    box[2] = math.inf
+    box[3] = -math.inf
+    box[4] = 0.0
+    _bbox_update(PA, box)
+    _bbox_update(PB, box)
+    dx = box[1] - box[0]
+    dy = box[3] - box[2]
+    tol = 1e-9 * math.sqrt(dx * dx + dy * dy) + 64.0 * _EPS * box[4]
     if not (tol > 0.0 and tol < math.inf):
         return 1e-300
     return tol
@@ -1093,15 +1100,27 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
             du = abs(pts[i, 1] - pts[j, 1])
             if dt <= 1e-9 and du <= 1e-9:
                 same = True
-            elif dt <= 1e-6 and du <= 1e-6:
-                # same contact if the curves never separate beyond tol between them
-                tm = 0.5 * (pts[i, 0] + pts[j, 0])
-                um = 0.5 * (pts[i, 1] + pts[j, 1])
-                x, y, _a, _b, _c, _d = _eval(HA, tm, wa)
-                x2, y2, _a, _b, _c, _d = _eval(HB, um, wb)
-                same = math.hypot(x - x2, y - y2) <= tl and (
+            elif dt <= 1e-9 or du <= 1e-9:
+                # one parameter shared: the same point of a point-like stretch
+                x, y, _a, _b, _c, _d = _eval(HA, pts[i, 0], wa)
+                x2, y2, _a, _b, _c, _d = _eval(HA, pts[j, 0], wa)
+                x3, y3, _a, _b, _c, _d = _eval(HB, pts[i, 1], wb)
+                x4, y4, _a, _b, _c, _d = _eval(HB, pts[j, 1], wb)
+                same = math.hypot(x - x2, y - y2) <= tl and math.hypot(x3 - x4, y3 - y4) <= tl
+            elif dt <= 1e-3 and du <= 1e-3 and (
                     pts[i, 3] == KIND_TANGENT or pts[j, 3] == KIND_TANGENT
-                    or pts[i, 4] == 2.0 or pts[j, 4] == 2.0)
+                    or pts[i, 4] == 2.0 or pts[j, 4] == 2.0):
+                # one contact if the curves stay within tol all along between them
+                same = True
+                for q in range(1, 8):
+                    f = q / 8.0
+                    tm = pts[i, 0] + f * (pts[j, 0] - pts[i, 0])
+                    um = pts[i, 1] + f * (pts[j, 1] - pts[i, 1])
+                    x, y, _a, _b, _c, _d = _eval(HA, tm, wa)
+                    x2, y2, _a, _b, _c, _d = _eval(HB, um, wb)
+                    if math.hypot(x - x2, y - y2) > tl:
+                        same = False
+                        break
             else:
                 same = False
             if same:

@@ -127,8 +127,17 @@ def _finish(result: IntersectionList, on_budget: str) -> IntersectionList:
     return result
 
 
+def _ro(arr: FloatArray) -> FloatArray:
+    """A read-only C-contiguous float64 array (the one array type the kernels are compiled for)."""
+    if arr.flags.writeable or not arr.flags.c_contiguous or arr.dtype != np.float64:
+        arr = np.array(arr, dtype=np.float64, order="C")
+        arr.flags.writeable = False
+    return arr
+
+
 def _planar(pa: FloatArray, wa: FloatArray, pb: FloatArray, wb: FloatArray, tol: float,
             budget: int) -> IntersectionList:
+    pa, wa, pb, wb = _ro(pa), _ro(wa), _ro(pb), _ro(wb)
     res = np.empty((16, RES_COLS))
     res, n = intersect_pair_kernel(pa, wa, pb, wb, tol, budget, 0, res, 0)
     return _rows_to_list(res[:n])
@@ -335,8 +344,8 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     --------
     >>> from relief_cad.curves import RationalBezier
     >>> c = RationalBezier([[0, 0], [1, 2], [2, 0]])
-    >>> [(r.t, r.u) for r in intersect_line(c, (0, 0.5), (1, 0))]
-    [(0.25, 0.25), (0.75, 1.75)]
+    >>> [(r.t, r.u) for r in intersect_line(c, (0, 0.75), (1, 0))]
+    [(0.25, 0.5), (0.75, 1.5)]
     """
     _check_curve(curve, "curve")
     if curve.dim != 2:
@@ -426,6 +435,8 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
         idx = np.arange(2 * len(planar), dtype=np.int64).reshape(-1, 2)
         # a tolerance <= 0 asks the kernel for the pair's default_tolerance
         tols = np.full(len(planar), -1.0 if ftol is None else ftol)
+        pts.flags.writeable = False
+        wts.flags.writeable = False
         res, n = intersect_batch_kernel(pts, wts, offsets, idx, tols, nbudget)
         res = res[:n]
         order = np.argsort(res[:, 0], kind="stable")

@@ -1,0 +1,169 @@
+"""Low-level ("hazmat") Bézier clipping functions, documented, no stability promise.
+
+These are thin Python faces of the numba kernels in :mod:`relief_cad._kernels`
+that the planar intersector runs; they let you inspect one clipping step.
+
+A *fat line* of a curve is a strip ``dmin <= nx x + ny y + c <= dmax`` (unit
+normal ``(nx, ny)``) containing the curve; it runs along the chord through the
+end points (or, for a closed or point-like control polygon, from the first
+point to the farthest one). For a rational curve with control points ``P_j``
+and weights ``w_j > 0`` the signed distance to the line is
+
+.. math::
+
+    d(s) = \\frac{\\sum_j w_j d_j B_j^m(s)}{\\sum_j w_j B_j^m(s)}, \\qquad d_j = n \\cdot P_j + c,
+
+so ``dmin <= d(s)`` is ``sum_j w_j (d_j - dmin) B_j(s) >= 0`` and ``d(s) <= dmax``
+is ``sum_j w_j (dmax - d_j) B_j(s) >= 0``: two *explicit* Bézier functions whose
+control points ``(j/m, w_j (d_j - dmin))`` bound them by their convex hull. The
+clip range is where both hulls reach ``>= 0``.
+
+>>> import numpy as np
+>>> nodes = np.array([[0.0, 0.0], [1.0, 2.0], [2.0, -2.0], [3.0, 0.0]])
+>>> compute_fat_line(nodes)
+(0.0, 1.0, 0.0, -2.0, 2.0)
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ._kernels import clip_range_kernel, fat_line_kernel, hull_range_kernel
+from ._types import FloatArray
+from .errors import ShapeError
+
+__all__ = [
+    "clip_range",
+    "compute_fat_line",
+    "distance_coefficients",
+    "hull_range",
+]
+
+
+def _points(nodes: FloatArray, name: str = "nodes") -> FloatArray:
+    arr = np.ascontiguousarray(nodes, dtype=np.float64)
+    if arr.ndim != 2 or arr.shape[1] != 2 or arr.shape[0] < 2:
+        raise ShapeError(f"{name} should have shape (m + 1, 2) with m >= 1, not {arr.shape}")
+    return arr
+
+
+def compute_fat_line(nodes: FloatArray, *, perpendicular: bool = False
+                     ) -> tuple[float, float, float, float, float]:
+    """Fat line ``(nx, ny, c, dmin, dmax)`` of a control polygon (not widened by a tolerance).
+
+    Parameters
+    ----------
+    nodes : ndarray, shape (m + 1, 2)
+        Cartesian control points.
+    perpendicular : bool
+        Return the perpendicular fat line (bounds along the chord) instead.
+
+    Returns
+    -------
+    tuple of float
+        Unit normal ``(nx, ny)``, offset ``c`` and the distance bounds of the nodes.
+
+    Examples
+    --------
+    >>> compute_fat_line(np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]]))
+    (0.0, 1.0, 0.0, 0.0, 1.0)
+    >>> compute_fat_line(np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]]), perpendicular=True)
+    (1.0, 0.0, 0.0, 0.0, 2.0)
+    >>> compute_fat_line(np.array([[1.0, 1.0], [1.0, 1.0]]))  # point-like: defined, no error
+    (0.0, 1.0, -1.0, 0.0, 0.0)
+    """
+    nx, ny, c, dmin, dmax = fat_line_kernel(_points(nodes), perpendicular)
+    # (+ 0.0 turns a -0.0 into 0.0)
+    return float(nx) + 0.0, float(ny) + 0.0, float(c) + 0.0, float(dmin) + 0.0, float(dmax) + 0.0
+
+
+def distance_coefficients(nodes: FloatArray, weights: FloatArray | None,
+                          line: tuple[float, float, float, float, float], tol: float = 0.0
+                          ) -> tuple[FloatArray, FloatArray]:
+    """Bézier coefficients of ``w (d - dmin + tol)`` and ``w (dmax + tol - d)`` of a curve.
+
+    Parameters
+    ----------
+    nodes : ndarray, shape (m + 1, 2)
+        The clipped curve's control points.
+    weights : ndarray, shape (m + 1,) or None
+        Its weights (``None`` for a polynomial curve).
+    line : tuple
+        A fat line ``(nx, ny, c, dmin, dmax)`` from :func:`compute_fat_line`.
+    tol : float
+        Widening of the strip on both sides.
+
+    Returns
+    -------
+    (ndarray, ndarray)
+        ``lower`` and ``upper``: the curve can be inside the strip only where both
+        Bézier functions are ``>= 0``.
+
+    Examples
+    --------
+    >>> lower, upper = distance_coefficients(np.array([[0.0, 3.0], [1.0, -1.0], [2.0, 3.0]]),
+    ...                                      np.array([1.0, 2.0, 1.0]), (0.0, 1.0, 0.0, 0.0, 1.0))
+    >>> lower.tolist(), upper.tolist()
+    ([3.0, -2.0, 3.0], [-2.0, 4.0, -2.0])
+    """
+    p = _points(nodes)
+    w = np.ones(p.shape[0]) if weights is None else np.asarray(weights, dtype=np.float64)
+    nx, ny, c, dmin, dmax = line
+    d = p @ np.array([nx, ny]) + c
+    return w * (d - (dmin - tol)), w * ((dmax + tol) - d)
+
+
+def hull_range(coefficients: FloatArray) -> tuple[float, float]:
+    """Range of ``s`` where the convex hull of ``(j / m, e_j)`` reaches ``e >= 0``.
+
+    Returns ``(lo, hi)``; ``lo > hi`` when the whole hull is below zero.
+
+    Examples
+    --------
+    >>> hull_range(np.array([-1.0, 1.0]))
+    (0.5, 1.0)
+    >>> hull_range(np.array([-1.0, -2.0, -1.0]))
+    (inf, -inf)
+    """
+    e = np.ascontiguousarray(coefficients, dtype=np.float64)
+    if e.ndim != 1 or e.shape[0] < 2:
+        raise ShapeError(f"coefficients should have shape (m + 1,) with m >= 1, not {e.shape}")
+    lo, hi = hull_range_kernel(e)
+    return float(lo), float(hi)
+
+
+def clip_range(nodes: FloatArray, weights: FloatArray | None,
+               line: tuple[float, float, float, float, float], tol: float = 0.0
+               ) -> tuple[float, float]:
+    """Parameter range of a curve that can lie in a fat line widened by ``tol``.
+
+    Parameters
+    ----------
+    nodes, weights
+        The clipped curve (weights ``None`` for a polynomial curve).
+    line : tuple
+        ``(nx, ny, c, dmin, dmax)`` of the other curve.
+    tol : float
+        Widening of the strip on both sides.
+
+    Returns
+    -------
+    (float, float)
+        ``(lo, hi)`` in ``[0, 1]``; ``lo > hi`` means the curve misses the strip.
+
+    Examples
+    --------
+    >>> line = compute_fat_line(np.array([[0.0, 0.0], [2.0, 0.0]]))
+    >>> clip_range(np.array([[0.0, -1.0], [1.0, 1.0]]), None, line)
+    (0.5, 0.5)
+    >>> lo, hi = clip_range(np.array([[0.0, 1.0], [1.0, 2.0]]), None, line)
+    >>> lo > hi
+    True
+    """
+    p = _points(nodes)
+    w = np.ones(p.shape[0]) if weights is None else np.ascontiguousarray(weights, dtype=np.float64)
+    if w.shape != (p.shape[0],):
+        raise ShapeError(f"weights should have shape ({p.shape[0]},), not {w.shape}")
+    nx, ny, c, dmin, dmax = (float(v) for v in line)
+    lo, hi = clip_range_kernel(p, w, nx, ny, c, dmin - tol, dmax + tol, np.empty(p.shape[0]))
+    return float(lo), float(hi)
