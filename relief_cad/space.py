@@ -29,7 +29,7 @@ runs with that widened tolerance and no space near-miss closer than ``tol`` is l
 >>> import numpy as np
 >>> from relief_cad import RationalBezier
 >>> a = RationalBezier([[0, 0, 0], [1, 1, 1], [2, 0, 2]])
->>> b = RationalBezier([[0, 0, 2], [1, 0.5, 1], [2, 0, 0]])
+>>> b = RationalBezier([[0, 0, 2], [1, 1, 1], [2, 0, 0]])
 >>> [round(r.t, 12) for r in intersect_space(a, b)]
 [0.5]
 """
@@ -37,12 +37,13 @@ runs with that widened tolerance and no space near-miss closer than ``tol`` is l
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
 
+from ._kernels import KIND_OVERLAP, KIND_UNRESOLVED
+from ._kernels_space import SPACE_COLS, STATUS_ARTEFACT, _frame, space_pair_kernel
 from ._types import FloatArray
 from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError, ToleranceError
@@ -52,10 +53,8 @@ from .tolerances import default_tolerance
 
 __all__ = ["ReliefFrame", "ReliefScheme", "intersect_space", "relief_scheme"]
 
-_EPS = float(np.finfo(np.float64).eps)
-_MAX_FRAMES = 4
-_OVERLAP_SAMPLES = 17
-_TANGENT_SIN = 1e-6
+_KIND_NAMES: dict[int, Literal["crossing", "tangent"]] = {0: "crossing", 1: "tangent"}
+DEFAULT_BUDGET = 20000
 
 
 @dataclass(frozen=True)
@@ -107,51 +106,28 @@ class ReliefScheme:
     planar_tolerance: float
 
 
-def _frame_from_direction(points: FloatArray, direction: FloatArray, name: str) -> ReliefFrame:
-    d = direction / np.linalg.norm(direction)
-    centre = 0.5 * (points.min(axis=0) + points.max(axis=0))
-    rel = points - centre
-    radius = float(np.max(np.linalg.norm(rel, axis=1)))
-    if radius == 0.0:
-        radius = 1.0
-    depth_spread = float(np.max(np.abs(rel @ d)))
-    distance = depth_spread + 2.0 * radius
-    origin = centre - distance * d
-    helper = np.array([1.0, 0.0, 0.0]) if abs(d[0]) < 0.8 else np.array([0.0, 1.0, 0.0])
-    e1 = np.cross(helper, d)
-    e1 /= np.linalg.norm(e1)
-    e2 = np.cross(d, e1)
-    rot = np.vstack([e1, e2, d])
-    m = np.eye(4)
-    m[:3, :3] = rot / radius
-    m[:3, 3] = -(rot @ origin) / radius
-    return ReliefFrame(matrix=m, scale=radius, name=name)
+_FRAME_NAMES = ("model", "least-variance axis", "tilted view", "fixed oblique view")
 
 
-def _frames(points: FloatArray) -> Iterator[ReliefFrame]:
-    """Yield projection frames, best first: the model's own, then views along principal axes."""
-    z = points[:, 2]
-    big = float(np.max(np.abs(points)))
-    if float(z.min()) > 1e-3 * big and float(z.max()) < 100.0 * float(z.min()):
-        yield ReliefFrame(matrix=np.eye(4), scale=1.0, name="model")
-    centred = points - points.mean(axis=0)
-    if points.shape[0] >= 2 and float(np.max(np.abs(centred))) > 0.0:
-        _, _, vt = np.linalg.svd(centred)
-        axes = [vt[2], vt[1], vt[0]] if vt.shape[0] == 3 else [np.array([0.0, 0.0, 1.0])]
-    else:
-        axes = [np.array([0.0, 0.0, 1.0])]
-    yield _frame_from_direction(points, axes[0], "least-variance axis")
-    tilt = axes[0] + 0.6 * (axes[1] if len(axes) > 1 else np.array([1.0, 0.0, 0.0]))
-    yield _frame_from_direction(points, tilt, "tilted view")
-    yield _frame_from_direction(points, np.array([0.3, -0.5, 0.81]), "fixed oblique view")
+def _first_frame(points: FloatArray) -> ReliefFrame:
+    """The frame the kernel tries first for these control points (model coordinates)."""
+    ref = points[0].copy()
+    local = np.ascontiguousarray(points - ref)
+    m = np.empty((4, 4))
+    for mode, name in enumerate(_FRAME_NAMES):
+        scale = float(_frame(mode, local, ref, m))
+        if scale > 0.0:
+            shift = np.eye(4)
+            shift[:3, 3] = -ref
+            return ReliefFrame(matrix=m @ shift, scale=scale, name=name)
+    raise AssertionError("unreachable: the oblique frames always exist")  # pragma: no cover
 
 
 def _planar_tolerance(a_f: RationalBezier, b_f: RationalBezier, tol_frame: float) -> float:
     pts = np.vstack([a_f.control_points, b_f.control_points])
     zmin = float(pts[:, 2].min())
     r2 = float(np.max((pts[:, 0] ** 2 + pts[:, 1] ** 2) / pts[:, 2] ** 2))
-    lipschitz = math.sqrt(1.0 + r2) / zmin
-    return lipschitz * tol_frame * (1.0 + 1e-6)
+    return math.sqrt(1.0 + r2) / zmin * tol_frame * (1.0 + 1e-6)
 
 
 def relief_scheme(
@@ -188,7 +164,7 @@ def relief_scheme(
     b3 = b.embedded(3)
     pts = np.vstack([a3.control_points, b3.control_points])
     if frame is None:
-        frame = next(_frames(pts))
+        frame = _first_frame(pts)
     t = default_tolerance(pts) if tol is None else float(tol)
     a_f = a3.transformed(frame.matrix)
     b_f = b3.transformed(frame.matrix)
@@ -208,168 +184,79 @@ def relief_scheme(
     )
 
 
-# ---------------------------------------------------------------------------- space polish
-def _eval_h(h: FloatArray, t: float) -> tuple[FloatArray, FloatArray]:
-    """Point and derivative of a homogeneous curve at one parameter (de Casteljau)."""
-    n = h.shape[0] - 1
-    b = h.copy()
-    s = 1.0 - t
-    for r in range(1, n):
-        b[: n + 1 - r] = s * b[: n + 1 - r] + t * b[1 : n + 2 - r]
-    value = s * b[0] + t * b[1]
-    dvalue = n * (b[1] - b[0])
-    w = value[-1]
-    p = value[:-1] / w
-    dp = (dvalue[:-1] - p * dvalue[-1]) / w
-    return p, dp
+# ---------------------------------------------------------------------------- driver
+def _rows_to_results(rows: FloatArray) -> tuple[list[Result], list[ParameterBox]]:
+    items: list[Result] = []
+    boxes: list[ParameterBox] = []
+    for r in rows.tolist():
+        kind = int(r[0])
+        if kind == KIND_OVERLAP:
+            items.append(Overlap(t=(r[1], r[3]), u=(r[2], r[4])))
+        elif kind == KIND_UNRESOLVED:
+            boxes.append(ParameterBox(r[1], r[3], r[2], r[4]))
+        else:
+            items.append(Intersection(r[1], r[2], np.array(r[5:8]), _KIND_NAMES[kind], r[8]))
+    return items, boxes
 
 
-def _polish(
-    ha: FloatArray, hb: FloatArray, t: float, u: float, fix_t: bool, fix_u: bool
-) -> tuple[float, float, float]:
-    """Minimise |a(t) - b(u)| locally: Gauss-Newton with Levenberg damping, parameters in [0, 1].
-
-    A fixed parameter (an exact end point) is not moved. Returns ``(t, u, gap)``.
-    """
-    pa, da = _eval_h(ha, t)
-    pb, db = _eval_h(hb, u)
-    r = pa - pb
-    f = float(r @ r)
-    if fix_t and fix_u:
-        return t, u, math.sqrt(f)
-    lam = 0.0
-    for _ in range(80):
-        cols = ([] if fix_t else [da]) + ([] if fix_u else [-db])
-        jac = np.column_stack(cols)
-        jtj = jac.T @ jac
-        g = jac.T @ r
-        accepted = False
-        moved = 0.0
-        for _attempt in range(16):
-            a_mat = jtj + lam * np.diag(np.diag(jtj)) + 1e-300 * np.eye(jtj.shape[0])
-            step = -np.linalg.lstsq(a_mat, g, rcond=None)[0]
-            i = 0
-            nt, nu = t, u
-            if not fix_t:
-                nt = min(max(t + float(step[0]), 0.0), 1.0)
-                i = 1
-            if not fix_u:
-                nu = min(max(u + float(step[i]), 0.0), 1.0)
-            npa, nda = _eval_h(ha, nt)
-            npb, ndb = _eval_h(hb, nu)
-            nr = npa - npb
-            nf = float(nr @ nr)
-            if nf <= f:
-                moved = abs(nt - t) + abs(nu - u)
-                t, u, pa, da, pb, db, r, f = nt, nu, npa, nda, npb, ndb, nr, nf
-                lam = 0.0 if lam <= 1e-10 else lam * 0.1
-                accepted = True
-                break
-            lam = max(lam * 10.0, 1e-10)
-        if not accepted or f == 0.0 or moved <= 2.0 * _EPS:
-            break
-    return t, u, math.sqrt(f)
-
-
-def _snap_ends(
-    ha: FloatArray, hb: FloatArray, t: float, u: float, tol: float
-) -> tuple[float, float, bool, bool]:
-    """Snap parameters to exact end points when an end point of one curve lies on the other there."""
-    fix_t = fix_u = False
-    for end in (0.0, 1.0):
-        if abs(t - end) < 1e-9:
-            p, _ = _eval_h(ha, end)
-            q, _ = _eval_h(hb, u)
-            if float(np.linalg.norm(p - q)) <= tol:
-                t, fix_t = end, True
-        if abs(u - end) < 1e-9:
-            p, _ = _eval_h(ha, t)
-            q, _ = _eval_h(hb, end)
-            if float(np.linalg.norm(p - q)) <= tol:
-                u, fix_u = end, True
-    return t, u, fix_t, fix_u
-
-
-def _kind(ha: FloatArray, hb: FloatArray, t: float, u: float, gap: float, meet: float) -> str:
-    if gap > meet:
-        return "tangent"
-    _, da = _eval_h(ha, t)
-    _, db = _eval_h(hb, u)
-    na = float(np.linalg.norm(da))
-    nb = float(np.linalg.norm(db))
-    if na == 0.0 or nb == 0.0:
-        return "tangent"
-    sin = float(np.linalg.norm(np.cross(da, db))) / (na * nb)
-    return "crossing" if sin > _TANGENT_SIN else "tangent"
-
-
-def _project_onto(hb: FloatArray, p: FloatArray, u: float, lo: float, hi: float) -> tuple[float, float]:
-    """Closest point of b to p near u, within [lo, hi] (Newton on (b(u) - p) . b'(u) = 0)."""
-    for _ in range(40):
-        q, dq = _eval_h(hb, u)
-        r = q - p
-        # second derivative by a finite difference of the first (sufficient for the check)
-        h = 1e-7
-        _, dq2 = _eval_h(hb, min(u + h, 1.0))
-        ddq = (dq2 - dq) / h
-        g = float(r @ dq)
-        hess = float(dq @ dq + r @ ddq)
-        if hess <= 0.0:
-            hess = float(dq @ dq) or 1.0
-        nu = min(max(u - g / hess, lo), hi)
-        if abs(nu - u) < 1e-15:
-            u = nu
-            break
-        u = nu
-    q, _ = _eval_h(hb, u)
-    return u, float(np.linalg.norm(q - p))
-
-
-def _overlap_is_real(ha: FloatArray, hb: FloatArray, ov: Overlap, tol: float) -> bool:
-    t0, t1 = ov.t
-    u0, u1 = ov.u
-    for end_t, end_u in ((t0, u0), (t1, u1)):
-        p, _ = _eval_h(ha, end_t)
-        q, _ = _eval_h(hb, end_u)
-        if float(np.linalg.norm(p - q)) > tol:
-            return False
-    lo, hi = min(u0, u1), max(u0, u1)
-    for s in np.linspace(0.0, 1.0, _OVERLAP_SAMPLES)[1:-1]:
-        t = t0 + s * (t1 - t0)
-        p, _ = _eval_h(ha, t)
-        _, gap = _project_onto(hb, p, u0 + s * (u1 - u0), lo, hi)
-        if gap > tol:
-            return False
-    return True
-
-
-def _inside_overlap(t: float, u: float, overlaps: list[Overlap], slack: float) -> bool:
-    for ov in overlaps:
-        ulo, uhi = min(ov.u), max(ov.u)
-        if ov.t[0] - slack <= t <= ov.t[1] + slack and ulo - slack <= u <= uhi + slack:
-            return True
-    return False
-
-
-def _dedupe(points: list[Intersection], ptol: float) -> list[Intersection]:
-    """Merge repeated finds of one contact.
-
-    Crossings polish to a few ulps, so two within ``ptol`` are one. Tangent contacts converge only
-    to about the square root of the precision, so two tangent finds within ``1e-6`` are one.
-    """
-    points = sorted(points, key=lambda r: (r.t, r.u))
-    out: list[Intersection] = []
-    for p in points:
-        near = ptol
-        if out and p.kind == "tangent" and out[-1].kind == "tangent":
-            near = 1e-6
-        if out and abs(p.t - out[-1].t) <= near and abs(p.u - out[-1].u) <= near:
-            keep = out[-1]
-            if (p.distance, p.t not in (0.0, 1.0)) < (keep.distance, keep.t not in (0.0, 1.0)):
-                out[-1] = p
-            continue
-        out.append(p)
+def _pair(ha: FloatArray, hb: FloatArray, tol: float, budget: int, k: float) -> FloatArray:
+    rows, n, status = space_pair_kernel(ha, hb, tol, budget, k)
+    if status == STATUS_ARTEFACT:
+        raise BudgetExceededError(
+            "every projection frame showed an overlap of the projected curves that is not an overlap "
+            "in space (both curves on one cone through each centre tried); they could not be separated",
+            partial=IntersectionList([]), unresolved=[ParameterBox(0.0, 1.0, 0.0, 1.0)],
+        )
+    out: FloatArray = rows[:n]
     return out
+
+
+def _monotone(points: FloatArray) -> bool:
+    """True when every leg of the control polygon advances along the chord: no self-intersection."""
+    legs = np.diff(points, axis=0)
+    chord = points[-1] - points[0]
+    return bool(np.all(legs @ chord > 0.0))
+
+
+def _self_rows(curve: RationalBezier, tol: float, budget: int, k: float) -> FloatArray:
+    """Self-intersections: split into monotone pieces, intersect every pair of pieces."""
+    pieces: list[tuple[float, float, RationalBezier]] = []
+    stack = [(0.0, 1.0, curve, 0)]
+    while stack:
+        s0, s1, piece, depth = stack.pop()
+        if _monotone(piece.control_points) or depth >= 12:
+            pieces.append((s0, s1, piece))
+            continue
+        left, right = piece.split(0.5)
+        mid = 0.5 * (s0 + s1)
+        stack.append((mid, s1, right, depth + 1))
+        stack.append((s0, mid, left, depth + 1))
+    pieces.sort(key=lambda p: p[0])
+    rows: list[FloatArray] = []
+    for i, (a0, a1, pa) in enumerate(pieces):
+        for j in range(i + 1, len(pieces)):
+            b0, b1, pb = pieces[j]
+            found = _pair(pa.homogeneous, pb.homogeneous, tol, budget, k)
+            for r in found:
+                r = r.copy()
+                if j == i + 1 and r[1] == 1.0 and r[2] == 0.0:
+                    continue  # the joint shared by consecutive pieces
+                r[1] = a0 + r[1] * (a1 - a0)
+                r[3] = a0 + r[3] * (a1 - a0)
+                r[2] = b0 + r[2] * (b1 - b0)
+                r[4] = b0 + r[4] * (b1 - b0)
+                if abs(r[2] - r[1]) <= 1e-9:
+                    continue
+                rows.append(r)
+    if not rows:
+        return np.empty((0, SPACE_COLS))
+    table = np.array(sorted(rows, key=lambda r: (r[1], r[2])))
+    keep = [table[0]]
+    for r in table[1:]:
+        if abs(r[1] - keep[-1][1]) <= 1e-9 and abs(r[2] - keep[-1][2]) <= 1e-9:
+            continue
+        keep.append(r)
+    return np.array(keep)
 
 
 def _check_tol(tol: float | None, pts: FloatArray) -> float:
@@ -434,92 +321,29 @@ def intersect_space(
     >>> skew_b = RationalBezier([[0.5, -1, 1], [0.5, 1, 1]])
     >>> len(intersect_space(skew_a, skew_b))   # their projections along z cross; they do not meet
     0
-    >>> intersect_space(skew_a, skew_b, tol=1.5)[0].kind   # a near-miss within tol is a contact
+    >>> intersect_space(skew_a, skew_b, tol=1.01)[0].kind   # a near-miss within tol is a contact
     'tangent'
     """
-    from .intersection import intersect as planar_intersect
-
     if not isinstance(a, RationalBezier) or not (b is None or isinstance(b, RationalBezier)):
         raise InputTypeError(
             "intersect_space expects RationalBezier curves, not "
             f"{type(a).__name__} and {type(b).__name__}"
         )
-    self_mode = b is None
-    a3 = a.embedded(3)
-    b3 = a3 if b is None else b.embedded(3)
-    pts = a3.control_points if self_mode else np.vstack([a3.control_points, b3.control_points])
-    tol_v = _check_tol(tol, pts)
-    input_noise = 16.0 * _EPS * float(np.max(np.abs(pts)))
-    # Work about a local origin: subtracting a nearby reference is exact (Sterbenz), and keeps the
-    # full relative precision of curves far from the model origin. Parameters are unchanged.
-    ref = a3.control_points[0].copy()
-    a3 = RationalBezier(a3.control_points - ref, a3.weights)
-    b3 = a3 if self_mode else RationalBezier(b3.control_points - ref, b3.weights)
-    pts = a3.control_points if self_mode else np.vstack([a3.control_points, b3.control_points])
-    ha = a3.homogeneous
-    hb = b3.homogeneous
-    big = float(np.max(np.abs(pts)))
-    # A gap below this is a meeting (rounding of the input data or of the evaluation), not a near-miss.
-    meet = max(1e3 * _EPS * big, input_noise, 1e-3 * tol_v)
-    unresolved: list[ParameterBox] = []
-    phi = ReliefPerspective(k)
-    last_frame = ""
-    for frame in _frames(pts):
-        last_frame = frame.name
-        a_f = a3.transformed(frame.matrix)
-        b_f = a_f if self_mode else b3.transformed(frame.matrix)
-        a_s = central_projection(phi.apply(a_f))
-        b_s = a_s if self_mode else central_projection(phi.apply(b_f))
-        ptol = _planar_tolerance(a_f, b_f, tol_v / frame.scale)
-        try:
-            planar = planar_intersect(a_s, None if self_mode else b_s, tol=ptol, budget=budget,
-                                      on_budget="return")
-        except BudgetExceededError:  # pragma: no cover - on_budget="return" should not raise
-            raise
-        unresolved = list(getattr(planar, "unresolved", ()))
-        overlaps: list[Overlap] = []
-        artefact = False
-        for res in planar:
-            if isinstance(res, Overlap):
-                if not self_mode and _overlap_is_real(ha, hb, res, tol_v):
-                    overlaps.append(res)
-                else:
-                    artefact = True
-                    break
-        if artefact:
-            continue
-        points: list[Intersection] = []
-        for res in planar:
-            if isinstance(res, Overlap):
-                continue
-            t, u = float(res.t), float(res.u)
-            t, u, fix_t, fix_u = _snap_ends(ha, hb, t, u, tol_v)
-            t, u, gap = _polish(ha, hb, t, u, fix_t, fix_u)
-            if gap > tol_v:
-                continue
-            if self_mode and abs(t - u) <= 1e-9:
-                continue
-            if self_mode and t > u:
-                t, u = u, t
-            if _inside_overlap(t, u, overlaps, 1e-9):
-                continue
-            pa, _ = _eval_h(ha, t)
-            pb, _ = _eval_h(hb, u)
-            points.append(
-                Intersection(t=t, u=u, point=0.5 * (pa + pb) + ref, kind=_kind(ha, hb, t, u, gap, meet),  # type: ignore[arg-type]
-                             distance=gap)
-            )
-        results: list[Result] = [*_dedupe(points, 1e-10), *overlaps]
-        results.sort(key=lambda r: r.t if isinstance(r, Intersection) else r.t[0])
-        out = IntersectionList(results, unresolved)
-        if unresolved and on_budget == "raise":
-            raise BudgetExceededError(
-                f"the planar clipping budget ran out with {len(unresolved)} parameter boxes unresolved",
-                partial=out, unresolved=unresolved,
-            )
-        return out
-    raise BudgetExceededError(
-        f"every one of {_MAX_FRAMES} projection frames (last: {last_frame}) showed an overlap of the "
-        "projected curves that is not an overlap in space; the curves could not be separated",
-        partial=IntersectionList([], unresolved), unresolved=unresolved,
-    )
+    a3 = a if a.dim == 3 else a.embedded(3)
+    nbudget = DEFAULT_BUDGET if budget is None else int(budget)
+    if b is None:
+        rows = _self_rows(a3, _check_tol(tol, a3.control_points), nbudget, k)
+    else:
+        b3 = b if b.dim == 3 else b.embedded(3)
+        tol_v = -1.0 if tol is None else _check_tol(tol, a3.control_points)  # -1: kernel default
+        rows = _pair(a3.homogeneous, b3.homogeneous, tol_v, nbudget, k)
+    items, boxes = _rows_to_results(rows)
+    items.sort(key=lambda r: r.t if isinstance(r, Intersection) else r.t[0])
+    out = IntersectionList(items, boxes)
+    if boxes and on_budget == "raise":
+        raise BudgetExceededError(
+            f"the clipping budget ran out with {len(boxes)} parameter box(es) unresolved; "
+            "pass a larger budget= or on_budget='return'",
+            partial=list(out), unresolved=boxes,
+        )
+    return out
