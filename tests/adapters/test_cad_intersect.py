@@ -1,0 +1,408 @@
+"""relief_cad.cad.intersect / intersections / split on real OCCT edges.
+
+Truth: closed forms where they exist; otherwise OCCT's own answer on the same edges
+(relief_cad.cad.occt) and evaluating both edges at the reported parameters.
+"""
+
+from __future__ import annotations
+
+import math
+
+import build123d as bd
+import cadquery as cq
+import numpy as np
+import pytest
+from OCP.BRep import BRep_Tool
+from OCP.BRepAdaptor import BRepAdaptor_Curve
+from OCP.BRepAlgoAPI import BRepAlgoAPI_Splitter
+from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakePolygon
+from OCP.GCPnts import GCPnts_AbscissaPoint
+from OCP.Geom import Geom_BezierCurve, Geom_BSplineCurve
+from OCP.gp import gp_Ax1, gp_Ax2, gp_Circ, gp_Dir, gp_Elips, gp_Pnt, gp_Trsf, gp_Vec
+from OCP.TColgp import TColgp_Array1OfPnt
+from OCP.TColStd import TColStd_Array1OfInteger, TColStd_Array1OfReal
+from OCP.TopLoc import TopLoc_Location
+from OCP.TopoDS import TopoDS, TopoDS_Edge, TopoDS_Vertex
+from OCP.TopTools import TopTools_ListOfShape
+
+from relief_cad.cad import api, ocp
+from relief_cad.cad import build123d as rbd
+from relief_cad.cad import cadquery as rcq
+from relief_cad.cad.occt import occt_intersections
+from relief_cad.cad.results import EdgeIntersection, EdgeOverlap
+from relief_cad.errors import InputTypeError, InvalidInputError, ReliefCadError, ToleranceError
+
+TILTED = gp_Ax2(gp_Pnt(1.5, -2.0, 3.25), gp_Dir(1, 1, 1), gp_Dir(1, -1, 0))
+XY = gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1), gp_Dir(1, 0, 0))
+FRAMES = {"xy": XY, "tilted": TILTED}
+
+
+def fp(ax: gp_Ax2, x: float, y: float, z: float = 0.0) -> gp_Pnt:
+    o, xd, yd, zd = ax.Location(), ax.XDirection(), ax.YDirection(), ax.Direction()
+    return gp_Pnt(*(o.Coord(i) + x * xd.Coord(i) + y * yd.Coord(i) + z * zd.Coord(i) for i in (1, 2, 3)))
+
+
+def seg(ax: gp_Ax2, p: tuple[float, ...], q: tuple[float, ...]) -> TopoDS_Edge:
+    return BRepBuilderAPI_MakeEdge(fp(ax, *p), fp(ax, *q)).Edge()
+
+
+def circle(ax: gp_Ax2, r: float) -> TopoDS_Edge:
+    return BRepBuilderAPI_MakeEdge(gp_Circ(ax, r)).Edge()
+
+
+def located(edge: TopoDS_Edge) -> TopoDS_Edge:
+    trsf = gp_Trsf()
+    trsf.SetRotation(gp_Ax1(gp_Pnt(1, 2, 3), gp_Dir(0.3, -0.4, 0.8)), 0.7)
+    move = gp_Trsf()
+    move.SetTranslation(gp_Vec(5.0, -3.0, 2.0))
+    return TopoDS.Edge_s(edge.Moved(TopLoc_Location(move.Multiplied(trsf))))
+
+
+def value(edge: object, t: float) -> np.ndarray:
+    raw = edge if isinstance(edge, TopoDS_Edge) else edge.wrapped  # type: ignore[attr-defined]
+    return np.array(BRepAdaptor_Curve(raw).Value(t).Coord())
+
+
+def check_on_edges(results: list, tol: float = 1e-9) -> None:
+    """Every reported point lies on both edges at the reported parameters (OCCT evaluation)."""
+    for r in results:
+        if isinstance(r, EdgeIntersection):
+            np.testing.assert_allclose(value(r.edge_a, r.t), r.point, atol=tol)
+            np.testing.assert_allclose(value(r.edge_b, r.u), r.point, atol=tol)
+        else:
+            for t, u in zip(r.t, r.u, strict=True):
+                np.testing.assert_allclose(value(r.edge_a, t), value(r.edge_b, u), atol=tol)
+
+
+def vertex_points(vertices: list) -> list[tuple[float, float, float]]:
+    out = []
+    for v in vertices:
+        raw = v if isinstance(v, TopoDS_Vertex) else v.wrapped
+        out.append(BRep_Tool.Pnt_s(raw).Coord())
+    return sorted(out)
+
+
+def matches(ours: list, occt: list, tol: float = 1e-7) -> None:
+    """Same set of points as OCCT (each of ours near one of OCCT's and vice versa)."""
+    pa = [np.array(r.point) for r in ours if isinstance(r, EdgeIntersection)]
+    pb = [np.array(r.point) for r in occt if isinstance(r, EdgeIntersection)]
+    # OCCT quirk (Geom2dInt_GInter): a transversal circle/circle crossing can come back as an
+    # "overlap" of length ~1e-7; count it as the point it is
+    pb += [value(r.edge_a, 0.5 * (r.t[0] + r.t[1])) for r in occt
+           if isinstance(r, EdgeOverlap) and abs(r.t[1] - r.t[0]) < 1e-5]
+    assert len(pa) == len(pb), (pa, pb)
+    for p in pa:
+        assert min(np.linalg.norm(p - q) for q in pb) <= tol
+    for q in pb:
+        assert min(np.linalg.norm(p - q) for p in pa) <= tol
+
+
+# ----------------------------------------------------------------------------- closed forms
+@pytest.mark.parametrize("frame", list(FRAMES))
+@pytest.mark.parametrize("move", [False, True])
+def test_line_line(frame, move):
+    ax = FRAMES[frame]
+    a, b = seg(ax, (0, 0), (4, 2)), seg(ax, (0, 3), (3, 0))
+    if move:
+        a, b = located(a), located(b)
+    [hit] = api.intersections(a, b)
+    # x/2 = 3 - x -> x = 2, y = 1; t on a is the distance from its start
+    assert math.isclose(hit.t, math.hypot(2, 1), rel_tol=1e-14)
+    assert math.isclose(hit.u, math.hypot(2, 2), rel_tol=1e-14)
+    expected = value(a, hit.t)
+    np.testing.assert_allclose(hit.point, expected, atol=1e-12)
+    assert hit.kind == "crossing" and hit.route == "relief_cad" and not hit.approximate
+    check_on_edges([hit])
+
+
+@pytest.mark.parametrize("frame", list(FRAMES))
+@pytest.mark.parametrize("reverse", [False, True])
+def test_circle_line_angles(frame, reverse):
+    ax = FRAMES[frame]
+    c = circle(ax, 2.0)
+    if reverse:
+        c = TopoDS.Edge_s(c.Reversed())
+    line = seg(ax, (-3, 1), (3, 1))
+    hits = api.intersections(c, line)
+    # y = 1 on the circle of radius 2: angles pi/6 and 5pi/6 (the edge's own parameters)
+    assert [round(h.t, 14) for h in hits] == [round(math.pi / 6, 14), round(5 * math.pi / 6, 14)]
+    assert sorted(round(h.u, 13) for h in hits) == sorted(round(3 + s * math.sqrt(3), 13) for s in (-1, 1))
+    check_on_edges(hits)
+
+
+def test_ellipse_circle_closed_form():
+    a_, b_, r = 3.0, 1.0, 2.0
+    ell = BRepBuilderAPI_MakeEdge(gp_Elips(XY, a_, b_)).Edge()
+    hits = api.intersections(ell, circle(XY, r))
+    x = a_ * math.sqrt((r * r - b_ * b_) / (a_ * a_ - b_ * b_))
+    y = math.sqrt(r * r - x * x)
+    expected = sorted((sx * x, sy * y, 0.0) for sx in (-1, 1) for sy in (-1, 1))
+    got = sorted(tuple(round(c, 12) for c in h.point) for h in hits)
+    np.testing.assert_allclose(got, expected, atol=1e-13)
+    for h in hits:  # the ellipse's own parameter: x = a cos t, y = b sin t
+        assert math.isclose(math.cos(h.t) * a_, h.point[0], abs_tol=1e-13)
+        assert math.isclose(math.sin(h.t) * b_, h.point[1], abs_tol=1e-13)
+    check_on_edges(hits)
+
+
+def test_space_crossing_of_a_twisted_spline():
+    pts = [(0, 0, 0), (1, 2, 1), (2, -1, -1), (3, 2, 2), (4, 0, -0.5), (5, 1, 1)]
+    spline = bd.Edge.make_spline(pts)
+    p = np.array(tuple(spline.position_at(0.37)))
+    d = np.array([0.3, -0.2, 1.0])
+    line = bd.Edge.make_line(tuple(p - d), tuple(p + 2 * d))
+    [hit] = api.intersections(spline, line)
+    np.testing.assert_allclose(hit.point, p, atol=1e-9)
+    assert math.isclose(hit.u, math.sqrt(d @ d), rel_tol=1e-9)
+    check_on_edges([hit])
+
+
+# ----------------------------------------------------------------------------- against OCCT
+def _spline_xy() -> bd.Edge:
+    return bd.Edge.make_spline([(-3, -1), (-1, 2), (0, -1.5), (1.5, 1.8), (3, -0.5)])
+
+
+CASES = {
+    "spline_arc": lambda: (_spline_xy(), bd.Edge.make_circle(1.2, start_angle=-30, end_angle=260)),
+    "spline_line": lambda: (_spline_xy(), bd.Edge.make_line((-4, 0.2), (4, 0.3))),
+    "spline_spline": lambda: (_spline_xy(), _spline_xy().rotate(bd.Axis.Z, 25)),
+    "ellipse_circle_tilted": lambda: (
+        bd.Edge.make_ellipse(3, 1, plane=bd.Plane((1, 2, 3), z_dir=(1, 1, 1))),
+        bd.Edge.make_circle(2, plane=bd.Plane((1, 2, 3), z_dir=(1, 1, 1))),
+    ),
+    "arc_arc_located": lambda: (
+        bd.Edge.make_circle(1, start_angle=0, end_angle=200).moved(bd.Location((0.5, 0, 0), (0, 0, 10))),
+        bd.Edge.make_circle(1.2, start_angle=-90, end_angle=180),
+    ),
+}
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_against_occt(name):
+    a, b = CASES[name]()
+    ours = api.intersections(a, b)
+    assert ours
+    check_on_edges(ours)
+    matches(ours, occt_intersections(a, b))
+
+
+def test_glyph_outlines_cross():
+    t1 = bd.Text("A", 10)
+    t2 = bd.Text("B", 10).rotate(bd.Axis.Z, 17).translate((1.2, 0.8, 0))
+    ours = api.intersections(t1, t2)
+    assert len(ours) >= 4
+    check_on_edges(ours, tol=1e-7)
+    matches(ours, occt_intersections(t1, t2), tol=1e-6)
+    assert isinstance(ours[0].edge_a, bd.Edge)
+    verts = api.intersect(t1, t2)
+    assert isinstance(verts, bd.ShapeList) and all(isinstance(v, bd.Vertex) for v in verts)
+    assert len(verts) == len(ours)
+
+
+def test_two_filleted_sketch_wires():
+    with bd.BuildSketch() as sk1:
+        bd.Rectangle(4, 2)
+        bd.fillet(sk1.vertices(), 0.5)
+    with bd.BuildSketch() as sk2:
+        bd.Rectangle(3, 3)
+        bd.fillet(sk2.vertices(), 0.8)
+    w1 = sk1.sketch.wires()[0]
+    w2 = sk2.sketch.wires()[0].rotate(bd.Axis.Z, 30).translate((0.7, 0.3, 0))
+    ours = api.intersections(w1, w2)
+    assert ours
+    check_on_edges(ours)
+    matches(ours, occt_intersections(w1, w2))
+    # indices refer to the unique-edge lists
+    for r in ours:
+        assert ocp.edges_of(w1)[r.index_a].IsSame(r.edge_a.wrapped)
+        assert ocp.edges_of(w2)[r.index_b].IsSame(r.edge_b.wrapped)
+
+
+# ----------------------------------------------------------------------------- once only
+def test_shared_vertex_reported_once():
+    a = seg(XY, (0, 0), (1, 1))
+    b = seg(XY, (1, 1), (2, 0))
+    [hit] = api.intersections(a, b)
+    assert hit.point == pytest.approx((1.0, 1.0, 0.0), abs=1e-14)
+    assert math.isclose(hit.t, math.sqrt(2), rel_tol=1e-15) and hit.u == 0.0
+
+
+def _poles(pts: list[tuple[float, float]]) -> TColgp_Array1OfPnt:
+    arr = TColgp_Array1OfPnt(1, len(pts))
+    for i, p in enumerate(pts):
+        arr.SetValue(i + 1, gp_Pnt(p[0], p[1], 0.0))
+    return arr
+
+
+def test_crossing_at_bspline_knot_reported_once():
+    knots = TColStd_Array1OfReal(1, 3)
+    for i, k in enumerate((0.0, 1.0, 2.0)):
+        knots.SetValue(i + 1, k)
+    mults = TColStd_Array1OfInteger(1, 3)
+    for i, m in enumerate((4, 1, 4)):
+        mults.SetValue(i + 1, m)
+    g = Geom_BSplineCurve(_poles([(0, 0), (1, 2), (2, -1), (3, 2), (4, 0)]), knots, mults, 3)
+    spline = BRepBuilderAPI_MakeEdge(g).Edge()
+    p = g.Value(1.0)
+    line = BRepBuilderAPI_MakeEdge(gp_Pnt(p.X() - 0.5, p.Y() - 3, 0), gp_Pnt(p.X() + 0.5, p.Y() + 3, 0)).Edge()
+    hits = api.intersections(spline, line)
+    assert len(hits) == 1
+    assert math.isclose(hits[0].t, 1.0, abs_tol=1e-12)
+    assert len(api.intersect(spline, line)) == 1
+
+
+def test_overlap_of_collinear_lines_and_arcs():
+    a = seg(XY, (0, 0), (3, 0))
+    b = seg(XY, (2, 0), (5, 0))
+    [ov] = api.intersections(a, b)
+    assert isinstance(ov, EdgeOverlap)
+    assert ov.t == pytest.approx((2.0, 3.0), abs=1e-12) and ov.u == pytest.approx((0.0, 1.0), abs=1e-12)
+    assert BRep_Tool.Range_s(ov.edge) == pytest.approx((2.0, 3.0), abs=1e-12)
+    arc1 = BRepBuilderAPI_MakeEdge(gp_Circ(XY, 1.0), 0.0, 2.0).Edge()
+    arc2 = BRepBuilderAPI_MakeEdge(gp_Circ(XY, 1.0), 1.0, 3.0).Edge()
+    [ov2] = api.intersections(arc1, arc2)
+    assert isinstance(ov2, EdgeOverlap)
+    assert ov2.t == pytest.approx((1.0, 2.0), abs=1e-9) and ov2.u == pytest.approx((1.0, 2.0), abs=1e-9)
+    check_on_edges([ov, ov2])
+
+
+# ----------------------------------------------------------------------------- self-intersections
+def test_bowtie_wire_self_intersection_without_shared_vertices():
+    bowtie = BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(2, 2, 0), gp_Pnt(2, 0, 0), gp_Pnt(0, 2, 0), True)
+    hits = api.intersections(bowtie.Wire())
+    assert len(hits) == 1
+    assert hits[0].point == pytest.approx((1.0, 1.0, 0.0), abs=1e-14)
+    assert hits[0].index_a < hits[0].index_b
+
+
+def test_looping_bezier_crosses_itself_once():
+    g = Geom_BezierCurve(_poles([(0, 0), (3, 2), (-1, 2), (2, 0)]))
+    edge = BRepBuilderAPI_MakeEdge(g).Edge()
+    [hit] = api.intersections(edge)
+    assert hit.index_a == hit.index_b == 0 and hit.t < hit.u
+    # symmetric loop: x(t) = x(1 - t) on the double point, so t + u = 1
+    assert math.isclose(hit.t + hit.u, 1.0, abs_tol=1e-9)
+    check_on_edges([hit])
+
+
+@pytest.mark.parametrize(
+    "shape",
+    [
+        lambda: circle(TILTED, 2.0),
+        lambda: bd.Wire.make_rect(2, 1),
+        lambda: bd.Edge.make_spline([(0, 0), (2, 1), (1, 3), (-1, 2)], periodic=True),
+        lambda: bd.Face.make_rect(2, 1),
+        lambda: bd.Solid.make_box(1, 2, 3),
+    ],
+)
+def test_simple_shapes_have_no_self_intersections(shape):
+    assert api.intersections(shape()) == []
+
+
+# ----------------------------------------------------------------------------- flavours
+def test_flavours_of_vertices():
+    a_b, b_b = bd.Edge.make_line((0, 0), (2, 2)), bd.Edge.make_line((0, 2), (2, 0))
+    assert isinstance(api.intersect(a_b, b_b)[0], bd.Vertex)
+    a_c = cq.Edge.makeLine(cq.Vector(0, 0, 0), cq.Vector(2, 2, 0))
+    b_c = cq.Edge.makeLine(cq.Vector(0, 2, 0), cq.Vector(2, 0, 0))
+    [v] = api.intersect(a_c, b_c)
+    assert isinstance(v, cq.Vertex) and v.toTuple() == pytest.approx((1, 1, 0))
+    [raw] = api.intersect(a_c.wrapped, b_c.wrapped)
+    assert isinstance(raw, TopoDS_Vertex)
+
+
+def test_build123d_contexts_and_algebra():
+    with bd.BuildSketch() as sk:
+        c = bd.Circle(1.0)
+        bd.Rectangle(3, 0.5, mode=bd.Mode.PRIVATE)
+        line = bd.Edge.make_line((-2, 0.25), (2, 0.25))
+        pts = rbd.intersect(c.edges(), line)
+        assert len(pts) == 2
+        with bd.Locations(*pts):
+            bd.Circle(0.1, mode=bd.Mode.SUBTRACT)
+    assert len(sk.sketch.faces()) == 1
+    # algebra mode: plain functions on shapes
+    arc = bd.CenterArc((0, 0), 1, 0, 180)
+    pieces = rbd.split(arc, bd.Line((-2, 0.5), (2, 0.5)))
+    assert len(pieces) == 3 and isinstance(pieces, bd.ShapeList)
+
+
+def test_cadquery_plugin_invoke_and_register():
+    line = cq.Workplane("XY").moveTo(-2, 0.5).lineTo(2, 0.5)
+    circ = cq.Workplane("XY").circle(1.0)
+    wp = line.invoke(rcq.intersection_points(circ))
+    assert wp.size() == 2 and all(isinstance(v, cq.Vertex) for v in wp.vals())
+    # the chain goes on: a circle at each point
+    assert wp.circle(0.1).size() == 2
+    assert not hasattr(cq.Workplane, "relief_points")
+    rcq.register("relief_points")
+    try:
+        assert line.relief_points(circ).size() == 2
+        with pytest.raises(InvalidInputError):
+            rcq.register("circle")
+    finally:
+        delattr(cq.Workplane, "relief_points")
+
+
+# ----------------------------------------------------------------------------- split vs OCCT's splitter
+def _occt_split(a: TopoDS_Edge, b: TopoDS_Edge) -> list[TopoDS_Edge]:
+    splitter = BRepAlgoAPI_Splitter()
+    args, tools = TopTools_ListOfShape(), TopTools_ListOfShape()
+    args.Append(a)
+    tools.Append(b)
+    splitter.SetArguments(args)
+    splitter.SetTools(tools)
+    splitter.Build()
+    assert splitter.IsDone()
+    return ocp.edges_of(splitter.Shape())
+
+
+def _length(edge: TopoDS_Edge) -> float:
+    return float(GCPnts_AbscissaPoint.Length_s(BRepAdaptor_Curve(edge), 1e-13))
+
+
+@pytest.mark.parametrize(
+    "pair",
+    [
+        lambda: (seg(XY, (-3, 0.5), (3, 0.5)), circle(XY, 2.0)),
+        lambda: (circle(TILTED, 2.0), seg(TILTED, (-3, 0.5), (3, 0.5))),
+        lambda: (_spline_xy().wrapped, bd.Edge.make_line((-4, 0.2), (4, 0.3)).wrapped),
+        lambda: (located(circle(XY, 1.0)), located(seg(XY, (0, -2), (0.3, 2)))),
+    ],
+)
+def test_split_matches_occt_splitter(pair):
+    a, b = pair()
+    ours = api.split(a, b)
+    theirs = _occt_split(a, b)
+    assert len(ours) == len(theirs)
+    assert sorted(_length(e) for e in ours) == pytest.approx(sorted(_length(e) for e in theirs), abs=1e-7)
+    assert sum(_length(e) for e in ours) == pytest.approx(_length(a), rel=1e-12)
+
+
+def test_split_self_intersecting_wire():
+    bowtie = BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(2, 2, 0), gp_Pnt(2, 0, 0), gp_Pnt(0, 2, 0), True)
+    pieces = api.split(bowtie.Wire())
+    assert len(pieces) == 6
+
+
+# ----------------------------------------------------------------------------- bad input
+@pytest.mark.parametrize(
+    ("args", "error"),
+    [
+        (lambda: (ocp.make_compound([]), seg(XY, (0, 0), (1, 0))), InvalidInputError),
+        (lambda: (bd.Vertex(1, 2, 3), seg(XY, (0, 0), (1, 0))), InvalidInputError),
+        (lambda: ("edge", seg(XY, (0, 0), (1, 0))), InputTypeError),
+        (lambda: (seg(XY, (0, 0), (1, 0)), 3.0), InputTypeError),
+    ],
+)
+def test_bad_shapes(args, error):
+    a, b = args()
+    with pytest.raises(error) as info:
+        api.intersect(a, b)
+    assert isinstance(info.value, ReliefCadError)
+
+
+@pytest.mark.parametrize("tol", [0.0, -1.0, float("nan"), "x"])
+def test_bad_tolerance(tol):
+    with pytest.raises(ToleranceError):
+        api.intersections(seg(XY, (0, 0), (1, 0)), seg(XY, (0, 1), (1, 0)), tol=tol)
