@@ -386,8 +386,8 @@ def space_pair_kernel(HA0, HB0, tol, budget, k):  # type: ignore[no-untyped-def]
     """Intersect two space rational curves by the relief scheme.
 
     ``HA0``, ``HB0``: homogeneous rows ``(w x, w y, w z, w)`` in model coordinates; ``tol`` a
-    distance in model units (``<= 0`` asks for the default tolerance of both curves); ``budget`` the planar clipping budget; ``k`` the span of the
-    relief perspective. Returns ``(rows, nrows, status)``.
+    distance in model units (``<= 0`` asks for the default tolerance of both curves); ``budget``
+    the planar clipping budget; ``k`` the span of the relief perspective. Returns ``(rows, nrows, status)``.
     """
     na = HA0.shape[0]
     nb = HB0.shape[0]
