@@ -6,7 +6,7 @@ The core (this package) imports numpy and numba only; the CAD adapters live in
 >>> from relief_cad import RationalBezier, intersect
 >>> a = RationalBezier([[0, 0], [1, 2], [2, 0]])
 >>> b = RationalBezier([[0, 1], [2, 1]])
->>> [(round(r.t, 12), round(r.u, 12), r.kind) for r in intersect(a, b)]
+>>> [(round(r.t, 6), round(r.u, 6), r.kind) for r in intersect(a, b)]
 [(0.5, 0.5, 'tangent')]
 """
 
