@@ -18,7 +18,8 @@ algorithm that answered:
     ``SetFuzzyValue(tol)``: ``VERTEX`` parts are points, ``EDGE`` parts overlaps.
 ``"BRepAlgoAPI_Section"``
     Where the two routes above are known to fail: space edges that share a topological
-    vertex (``IntTools_EdgeEdge`` misses or duplicates the shared end), a failed
+    vertex or whose ends meet within ``tol`` (``IntTools_EdgeEdge`` misses such end
+    contacts), a failed
     ``IntTools_EdgeEdge``, or a curve type ``GeomAPI.To2d`` cannot map. The section's
     vertices and edges are projected back onto both edges for their parameters
     (``GeomAPI_ProjectPointOnCurve``); point kinds come from the tangents there.
@@ -437,6 +438,13 @@ def _shares_vertex(ea: Any, eb: Any) -> bool:
     return bool(TopExp.CommonVertex_s(ea, eb, TopoDS_Vertex()))
 
 
+def _ends_meet(da: _EdgeData, db: _EdgeData, tol: float) -> bool:
+    """True when an end of one edge lies within ``tol`` of an end of the other."""
+    ends_a = [da.curve.Value(da.first), da.curve.Value(da.last)]
+    ends_b = [db.curve.Value(db.first), db.curve.Value(db.last)]
+    return any(p.Distance(q) <= tol for p in ends_a for q in ends_b)
+
+
 def _shared_vertex_points(ea: Any, eb: Any) -> list[tuple[float, float, float]]:
     from OCP.BRep import BRep_Tool
     from OCP.TopAbs import TopAbs_VERTEX
@@ -476,7 +484,9 @@ def _pair(
     if db is None:
         # a single space edge: its two halves through IntTools_EdgeEdge
         return _self_space(da, tol)
-    if route == "BRepAlgoAPI_Section" or (route == "auto" and _shares_vertex(da.edge, db.edge)):
+    if route == "BRepAlgoAPI_Section" or (
+        route == "auto" and (_shares_vertex(da.edge, db.edge) or _ends_meet(da, db, tol))
+    ):
         return "BRepAlgoAPI_Section", _route_section(da, db, tol)
     raw = _route_edgeedge(da, db, tol)
     if raw is None:

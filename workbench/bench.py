@@ -1,0 +1,98 @@
+"""``bench``: run the benchmarks the other modules define and print/write their tables.
+
+Each benchmark lives in its own module with a ``run()`` function returning a list of row
+dicts (or a dict with a ``"rows"`` list): ``workbench.bench_planar`` (planar intersector),
+``workbench.bench_cad`` (CAD adapters), ``workbench.bench_space`` (space intersector).
+Rows are printed as a table (µs per pair and ratios against OCCT, as the module reports
+them) and written as JSON. A module that is missing or fails is reported, and the other
+benchmarks still run.
+"""
+
+from __future__ import annotations
+
+import importlib
+import json
+import time
+import traceback
+from pathlib import Path
+from typing import Any
+
+__all__ = ["BENCHMARKS", "run_bench", "format_rows"]
+
+BENCHMARKS = {
+    "planar": "workbench.bench_planar",
+    "cad": "workbench.bench_cad",
+    "space": "workbench.bench_space",
+}
+
+
+def format_rows(rows: list[dict[str, Any]]) -> str:
+    """Rows of dicts as an aligned text table (floats with 4 significant digits)."""
+    if not rows:
+        return "  (no rows)"
+    cols: list[str] = []
+    for r in rows:
+        for k in r:
+            if k not in cols:
+                cols.append(k)
+
+    def fmt(v: Any) -> str:
+        if isinstance(v, float):
+            return f"{v:.4g}"
+        return str(v)
+
+    cells = [[fmt(r.get(c, "")) for c in cols] for r in rows]
+    widths = [max(len(c), *(len(row[i]) for row in cells)) for i, c in enumerate(cols)]
+    out = ["  ".join(c.ljust(w) for c, w in zip(cols, widths, strict=True))]
+    out.append("  ".join("-" * w for w in widths))
+    out += ["  ".join(v.rjust(w) for v, w in zip(row, widths, strict=True)) for row in cells]
+    return "\n".join(out)
+
+
+def run_bench(names: list[str], out: str | Path | None = None, **kwargs: Any) -> dict[str, Any]:
+    """Run the named benchmarks (``all`` for every one); returns ``{name: result}``."""
+    if not names or "all" in names:
+        names = list(BENCHMARKS)
+    results: dict[str, Any] = {}
+    for name in names:
+        modname = BENCHMARKS.get(name)
+        if modname is None:
+            results[name] = {
+                "status": "error",
+                "reason": f"unknown benchmark {name!r}; known: {sorted(BENCHMARKS)}",
+            }
+            print(f"== bench {name}: {results[name]['reason']}")
+            continue
+        try:
+            mod = importlib.import_module(modname)
+        except ImportError as exc:
+            results[name] = {"status": "missing", "reason": f"module {modname} is missing ({exc})"}
+            print(f"== bench {name}: MISSING: {modname} is not available ({exc})")
+            continue
+        t0 = time.perf_counter()
+        try:
+            res = mod.run(**kwargs) if kwargs else mod.run()
+        except Exception as exc:  # noqa: BLE001
+            results[name] = {
+                "status": "error",
+                "reason": f"{type(exc).__name__}: {exc}",
+                "traceback": traceback.format_exc(),
+            }
+            print(f"== bench {name}: FAILED: {type(exc).__name__}: {exc}")
+            continue
+        rows = res.get("rows", res) if isinstance(res, dict) else res
+        if not isinstance(rows, list):
+            rows = [{"result": str(rows)}]
+        results[name] = {
+            "status": "ok",
+            "seconds": time.perf_counter() - t0,
+            "result": res if isinstance(res, (dict, list)) else str(res),
+        }
+        print(f"== bench {name} ({time.perf_counter() - t0:.1f} s)")
+        print(format_rows([r if isinstance(r, dict) else {"value": r} for r in rows]))
+    if out is not None:
+        p = Path(out)
+        p.parent.mkdir(parents=True, exist_ok=True)
+        p.write_text(json.dumps(results, indent=1, default=str))
+        print(f"benchmark results written to {p}")
+    return results
