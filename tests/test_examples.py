@@ -1,0 +1,187 @@
+"""Run every script in ``examples/`` headless into a temporary folder and check its outputs.
+
+The numbers the scripts print are checked against truth computed here independently of
+relief_cad: closed forms (line/circle), sign changes of an implicit form sampled along the
+other curve with OCCT's own evaluator and refined by bisection, and OCCT evaluation of the
+edges at the printed parameters.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import math
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+from types import ModuleType
+
+import numpy as np
+import pytest
+
+EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+SCRIPTS = sorted(p.name for p in EXAMPLES.glob("*.py"))
+CHECKED = {"build123d_sketch.py", "paper_figure.py", "step_intersections.py"}
+
+
+def _run(script: str, *args: str, timeout: float = 240.0) -> str:
+    env = dict(os.environ, MPLBACKEND="Agg")
+    proc = subprocess.run(
+        [sys.executable, str(EXAMPLES / script), *args],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=timeout,
+    )
+    assert proc.returncode == 0, f"{script} failed ({proc.returncode}):\n{proc.stdout}\n{proc.stderr}"
+    return proc.stdout
+
+
+def _load(script: str) -> ModuleType:
+    spec = importlib.util.spec_from_file_location(f"example_{Path(script).stem}", EXAMPLES / script)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def _check_png(path: Path, min_w: int = 300, min_h: int = 200, max_bytes: int = 600_000) -> None:
+    import matplotlib.image as mpimg
+
+    assert path.is_file() and 0 < path.stat().st_size <= max_bytes, path
+    img = mpimg.imread(path)
+    h, w = img.shape[:2]
+    assert w >= min_w and h >= min_h, (path, img.shape)
+    assert float(np.ptp(img[..., :3])) > 0.1, f"{path} is blank"
+
+
+def _value(edge, t: float) -> np.ndarray:
+    from OCP.BRepAdaptor import BRepAdaptor_Curve
+
+    p = BRepAdaptor_Curve(getattr(edge, "wrapped", edge)).Value(float(t))
+    return np.array([p.X(), p.Y(), p.Z()])
+
+
+def _roots_along(edge, f, n: int = 4000) -> list[np.ndarray]:
+    """Points of ``edge`` where the implicit function ``f`` changes sign (OCCT evaluation, bisection)."""
+    from OCP.BRepAdaptor import BRepAdaptor_Curve
+
+    c = BRepAdaptor_Curve(edge.wrapped)
+    t0, t1 = c.FirstParameter(), c.LastParameter()
+    ts = np.linspace(t0, t1, n)
+    vals = [f(_value(edge, t)) for t in ts]
+    out = []
+    for i in range(n - 1):
+        if vals[i] == 0.0 or vals[i] * vals[i + 1] < 0.0:
+            lo, hi, flo = ts[i], ts[i + 1], vals[i]
+            for _ in range(80):
+                mid = 0.5 * (lo + hi)
+                fm = f(_value(edge, mid))
+                if (fm < 0.0) == (flo < 0.0):
+                    lo, flo = mid, fm
+                else:
+                    hi = mid
+            out.append(_value(edge, 0.5 * (lo + hi)))
+    return out
+
+
+# --------------------------------------------------------------------------- every script runs
+
+
+def test_every_example_is_checked() -> None:
+    assert set(SCRIPTS) == CHECKED, "a new example needs its own output checks here"
+    assert (EXAMPLES / "cadquery_notebook.ipynb").is_file()
+    assert (EXAMPLES / "README.md").is_file()
+
+
+# --------------------------------------------------------------------------- build123d_sketch.py
+
+_ROW = re.compile(
+    r"^\s*(\d+)\s+(\w+)\s+(\w+)\s+(crossing|tangent)\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)\s*$", re.MULTILINE
+)
+
+
+def _segment_area(chord: float, sagitta: float) -> float:
+    r = (chord**2 / 4 + sagitta**2) / (2 * sagitta)
+    return r**2 * math.acos((r - sagitta) / r) - (r - sagitta) * math.sqrt(2 * r * sagitta - sagitta**2)
+
+
+def test_build123d_sketch(tmp_path: Path) -> None:
+    import build123d as bd
+
+    out = tmp_path / "out"
+    stdout = _run("build123d_sketch.py", str(out))
+    mod = _load("build123d_sketch.py")
+    curves = mod.construction_curves()
+    names = list(curves)
+    rows = _ROW.findall(stdout)
+    assert len(rows) == int(re.search(r"(\d+) crossing\(s\)", stdout).group(1))
+
+    # each printed point lies on both edges at the printed parameters (OCCT evaluation)
+    found: dict[tuple[str, str], list[np.ndarray]] = {}
+    for _i, na, nb, kind, x, y, t, u in rows:
+        p = np.array([float(x), float(y), 0.0])
+        assert kind == "crossing"
+        assert np.linalg.norm(_value(curves[na], float(t)) - p) < 1e-5
+        assert np.linalg.norm(_value(curves[nb], float(u)) - p) < 1e-5
+        found.setdefault((na, nb), []).append(p)
+    assert set(found) <= {(a, b) for i, a in enumerate(names) for b in names[i + 1:]}
+
+    # independent truth: line as a signed distance, the arc's circle as |p - c| - r
+    (lx0, ly0), (lx1, ly1) = (-45.0, 8.0), (45.0, -12.0)
+    normal = np.array([-(ly1 - ly0), lx1 - lx0]) / math.hypot(lx1 - lx0, ly1 - ly0)
+
+    def on_line(p: np.ndarray) -> float:
+        return float((p[:2] - (lx0, ly0)) @ normal)
+
+    centre, radius = np.array([0.0, -5.0]), 26.0
+    a0, a1 = math.radians(-25.0), math.radians(205.0)
+
+    def in_arc(p: np.ndarray) -> bool:
+        ang = math.atan2(p[1] - centre[1], p[0] - centre[0])
+        ang = ang if ang >= a0 else ang + 2 * math.pi
+        return a0 - 1e-9 <= ang <= a1 + 1e-9
+
+    def on_circle(p: np.ndarray) -> float:
+        return float(np.linalg.norm(p[:2] - centre) - radius)
+
+    truth = {
+        ("spline", "line"): _roots_along(curves["spline"], on_line),
+        ("spline", "arc"): [p for p in _roots_along(curves["spline"], on_circle) if in_arc(p)],
+    }
+    # line / circle in closed form: |l0 + s d - c|^2 = r^2
+    d = np.array([lx1 - lx0, ly1 - ly0])
+    f = np.array([lx0, ly0]) - centre
+    qa, qb, qc = d @ d, 2 * f @ d, f @ f - radius**2
+    disc = math.sqrt(qb * qb - 4 * qa * qc)
+    line_arc = [np.array([*(np.array([lx0, ly0]) + s * d), 0.0]) for s in ((-qb - disc) / (2 * qa), (-qb + disc) / (2 * qa))]
+    truth[("arc", "line")] = [p for p in line_arc if in_arc(p)]
+    assert sum(len(v) for v in truth.values()) == 6
+    for pair, expected in truth.items():
+        got = found.get(pair, [])
+        assert len(got) == len(expected), (pair, got, expected)
+        for p in expected:
+            assert min(np.linalg.norm(p - q) for q in got) < 2e-6, (pair, p, got)
+
+    # the STEP re-imports as one solid with one cylindrical hole per point; volume in closed form
+    step = out / "plate.step"
+    assert step.is_file() and step.stat().st_size > 1000
+    part = bd.import_step(str(step))
+    assert len(part.solids()) == 1
+    from OCP.BRepAdaptor import BRepAdaptor_Surface
+
+    holes = []  # (axis location x, y) of the cylindrical faces of the hole radius
+    for face in part.faces():
+        if face.geom_type == bd.GeomType.CYLINDER:
+            cyl = BRepAdaptor_Surface(face.wrapped).Cylinder()
+            if abs(cyl.Radius() - mod.HOLE_DIAMETER / 2) < 1e-9:
+                holes.append(np.array(cyl.Location().Coord()[:2]))
+    assert len(holes) == len(rows)
+    for p in (np.array([float(r[4]), float(r[5])]) for r in rows):
+        assert min(np.linalg.norm(h - p) for h in holes) < 1e-5
+    area = 100.0 * 50.0 + _segment_area(100.0, 18.0)
+    volume = (area - len(rows) * math.pi * (mod.HOLE_DIAMETER / 2) ** 2) * mod.PLATE_THICKNESS
+    assert part.volume == pytest.approx(volume, rel=1e-6)
+
+    _check_png(out / "sketch_intersections.png")
