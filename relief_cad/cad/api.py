@@ -155,19 +155,23 @@ def _prepare(shape: Any) -> list[_EdgeInfo]:
         if BRep_Tool.Degenerated_s(edge):
             continue
         segs = ocp.edge_segments(edge)
-        boxes = np.empty((len(segs), 2, 3))
-        for k, s in enumerate(segs):
-            pts = s.curve.control_points
-            boxes[k, 0] = pts.min(axis=0)
-            boxes[k, 1] = pts.max(axis=0)
+        if len(segs) == 1:
+            pts = segs[0].curve.control_points
+            boxes = np.stack([pts.min(axis=0), pts.max(axis=0)])[None]
+        else:
+            boxes = np.empty((len(segs), 2, 3))
+            for k, s in enumerate(segs):
+                pts = s.curve.control_points
+                boxes[k, 0] = pts.min(axis=0)
+                boxes[k, 1] = pts.max(axis=0)
         infos.append(
             _EdgeInfo(
                 index=index,
                 edge=edge,
                 segs=segs,
                 boxes=boxes,
-                lo=boxes[:, 0].min(axis=0),
-                hi=boxes[:, 1].max(axis=0),
+                lo=boxes[0, 0] if len(segs) == 1 else boxes[:, 0].min(axis=0),
+                hi=boxes[0, 1] if len(segs) == 1 else boxes[:, 1].max(axis=0),
                 tolerance=float(BRep_Tool.Tolerance_s(edge)),
                 approximate=any(s.approximate for s in segs),
                 first=segs[0].t0,
@@ -228,23 +232,39 @@ class _Raw:
     distance: float
 
 
-def _intersect_curves(ca: RationalBezier, cb: RationalBezier | None, tol: float) -> list[Any]:
+def _core() -> tuple[Any, Any]:
+    """``relief_cad.intersect`` and, when the core offers it, the batched ``intersect_many``."""
     import relief_cad
 
     core: Any = getattr(relief_cad, "intersect", None)
+    many: Any = getattr(relief_cad, "intersect_many", None)
     if core is None:  # pragma: no cover - until the package exports it
-        from ..intersection import intersect as core
-    return list(core(ca, cb, tol=tol))
+        from .. import intersection
+
+        core = intersection.intersect
+        many = getattr(intersection, "intersect_many", None)
+    return core, many
 
 
-def _edge_pair(ea: _EdgeInfo, eb: _EdgeInfo, same: bool, tol: float, planar: bool) -> list[_Raw]:
-    """All raw results of one edge pair (segment pairs pruned by boxes)."""
+@dataclass
+class _Job:
+    ea: _EdgeInfo
+    eb: _EdgeInfo
+    i: int
+    j: int
+    ca: RationalBezier
+    cb: RationalBezier | None  # None: self-intersection of one segment
+
+
+def _pair_jobs(ea: _EdgeInfo, eb: _EdgeInfo, same: bool, tol: float, planar: bool) -> list[_Job]:
+    """The segment pairs of one edge pair whose boxes (widened by ``tol``) overlap."""
+    frame = None
     if not planar:
         frame = ocp.planar_frame(
             np.vstack([s.curve.control_points for s in (ea.segs + ([] if same else eb.segs))]),
             tol * _PLANE_FRACTION,
         )
-    out: list[_Raw] = []
+    jobs: list[_Job] = []
     boxes_a, boxes_b = ea.boxes, eb.boxes
     for i, sa in enumerate(ea.segs):
         lo_a = boxes_a[i, 0] - tol
@@ -262,23 +282,54 @@ def _edge_pair(ea: _EdgeInfo, eb: _EdgeInfo, same: bool, tol: float, planar: boo
                 ca, cb = _to_plane(sa.curve, frame), _to_plane(sb.curve, frame)
             else:
                 ca, cb = sa.curve, sb.curve
-            found = _intersect_curves(ca, None if (same and i == j) else cb, tol)
-            for r in found:
-                if isinstance(r, Overlap):
-                    t = (sa.edge_param(r.t[0]), sa.edge_param(r.t[1]))
-                    u = (sb.edge_param(r.u[0]), sb.edge_param(r.u[1]))
-                    p = sa.curve.evaluate(r.t[0])
-                    out.append(_Raw(ea, eb, t, u, tuple(map(float, p)), "overlap", 0.0))  # type: ignore[arg-type]
-                elif isinstance(r, Intersection):
-                    pa = sa.curve.evaluate(r.t)
-                    pb = sb.curve.evaluate(r.u)
-                    point = 0.5 * (pa + pb)
-                    out.append(
-                        _Raw(ea, eb, sa.edge_param(r.t), sb.edge_param(r.u),
-                             (float(point[0]), float(point[1]), float(point[2])), r.kind,
-                             float(np.linalg.norm(pa - pb)))
-                    )
+            jobs.append(_Job(ea, eb, i, j, ca, None if (same and i == j) else cb))
+    return jobs
+
+
+def _solve(jobs: list[_Job], tol: float) -> list[list[Any]]:
+    """Run the core intersector on every job; planar two-curve jobs in one batched call."""
+    core, many = _core()
+    answers: list[list[Any] | None] = [None] * len(jobs)
+    batch = [k for k, job in enumerate(jobs) if job.cb is not None and job.ca.dim == 2 and job.cb.dim == 2]
+    if many is not None and len(batch) > 1:
+        for k, res in zip(batch, many([(jobs[k].ca, jobs[k].cb) for k in batch], tol=tol), strict=True):
+            answers[k] = list(res)
+    for k, job in enumerate(jobs):
+        if answers[k] is None:
+            answers[k] = list(core(job.ca, job.cb, tol=tol))
+    return [a if a is not None else [] for a in answers]
+
+
+def _raw_results(job: _Job, found: list[Any]) -> list[_Raw]:
+    """Map one segment pair's results to the edges' own parameters and 3D points."""
+    ea, eb = job.ea, job.eb
+    sa, sb = ea.segs[job.i], eb.segs[job.j]
+    out: list[_Raw] = []
+    for r in found:
+        if isinstance(r, Overlap):
+            t = (sa.edge_param(r.t[0]), sa.edge_param(r.t[1]))
+            u = (sb.edge_param(r.u[0]), sb.edge_param(r.u[1]))
+            out.append(_Raw(ea, eb, t, u, _point3(sa.curve, r.t[0]), "overlap", 0.0))
+        elif isinstance(r, Intersection):
+            pa = _point3(sa.curve, r.t)
+            pb = _point3(sb.curve, r.u)
+            point = (0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]))
+            out.append(_Raw(ea, eb, sa.edge_param(r.t), sb.edge_param(r.u), point, r.kind, math.dist(pa, pb)))
     return out
+
+
+def _point3(curve: RationalBezier, s: float) -> tuple[float, float, float]:
+    """The point of a space segment at ``s`` (Bernstein sum of the homogeneous rows; ends exact)."""
+    h = curve.homogeneous
+    n = h.shape[0] - 1
+    if s <= 0.0 or s >= 1.0:
+        row = h[0] if s <= 0.0 else h[n]
+    else:
+        r = 1.0 - s
+        basis = np.array([math.comb(n, i) * s**i * r ** (n - i) for i in range(n + 1)])
+        row = basis @ h
+    w = float(row[3])
+    return (float(row[0]) / w, float(row[1]) / w, float(row[2]) / w)
 
 
 def _is_same_vertex(v: Any, w: Any) -> bool:
@@ -368,7 +419,7 @@ def _shared_vertex_contact(r: _Raw, tol: float) -> bool:
     return False
 
 
-def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw]]:
+def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float]:
     flavour = flavour_of(a)
     infos_a = _prepare(a)
     if b is None:
@@ -383,7 +434,8 @@ def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw]]:
     frame = ocp.planar_frame(_all_points(everyone), ftol * _PLANE_FRACTION)
     _set_plane(everyone, frame)
     planar = frame is not None
-    raws: list[_Raw] = []
+    jobs: list[_Job] = []
+    edge_pairs: list[tuple[_EdgeInfo, _EdgeInfo, bool]] = []
     for ia, ea in enumerate(infos_a):
         for ib, eb in enumerate(infos_b):
             if b is None and ib < ia:
@@ -391,9 +443,18 @@ def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw]]:
             if np.any(ea.lo - ftol > eb.hi) or np.any(eb.lo - ftol > ea.hi):
                 continue
             same = b is None and ia == ib
-            pair = _edge_pair(ea, eb, same, ftol, planar)
+            edge_pairs.append((ea, eb, same))
+            jobs.extend(_pair_jobs(ea, eb, same, ftol, planar))
+    per_pair: dict[tuple[int, int], list[_Raw]] = {}
+    for job, found in zip(jobs, _solve(jobs, ftol), strict=True):
+        if found:
+            per_pair.setdefault((id(job.ea), id(job.eb)), []).extend(_raw_results(job, found))
+    raws: list[_Raw] = []
+    for ea, eb, same in edge_pairs:
+        pair = per_pair.get((id(ea), id(eb)))
+        if pair:
             raws.extend(_clean_pair(pair, same, b is None, ftol))
-    return flavour, raws
+    return flavour, raws, ftol
 
 
 # --------------------------------------------------------------------------- public API
@@ -437,7 +498,7 @@ def intersections(a: Any, b: Any = None, *, tol: float | None = None) -> list[Ed
     >>> intersections(square)
     []
     """
-    flavour, raws = _run(a, b, tol)
+    flavour, raws, _ = _run(a, b, tol)
     out: list[EdgeResult] = []
     natives: dict[int, Any] = {}
 
@@ -490,11 +551,7 @@ def intersect(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
     >>> intersect(a, c)
     []
     """
-    flavour, raws = _run(a, b, tol)
-    ftol = tol
-    if ftol is None:
-        infos = [r.ea for r in raws] + [r.eb for r in raws]
-        ftol = _default_tol(infos) if infos else 0.0
+    flavour, raws, ftol = _run(a, b, tol)
     points: list[tuple[float, float, float]] = []
     for r in sorted(raws, key=lambda r: (r.ea.index, r.eb.index, r.t if r.kind != "overlap" else r.t[0])):
         if r.kind == "overlap":
@@ -539,9 +596,8 @@ def split(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
     >>> [BRep_Tool.Range_s(e) for e in split(a, b)]
     [(0.0, 1.0), (1.0, 4.0)]
     """
-    flavour, raws = _run(a, b, tol)
+    flavour, raws, ftol = _run(a, b, tol)
     infos = _prepare(a)
-    ftol = _default_tol(infos) if tol is None else _check_tol(tol)
     cuts: dict[int, list[float]] = {}
     for r in raws:
         params_a = list(r.t) if r.kind == "overlap" else [r.t]

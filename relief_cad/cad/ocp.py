@@ -176,6 +176,17 @@ class Segment:
         >>> Segment(RationalBezier([[0, 0, 0], [1, 0, 0]]), 0.0, 2.0).edge_param(1.0)
         2.0
         """
+        if isinstance(s, (float, int)):
+            x = float(s)
+            if x == 0.0:
+                return self.t0
+            if x == 1.0:
+                return self.t1
+            if self.mapping == "linear":
+                return self.t0 + x * (self.t1 - self.t0)
+            if self.mapping == "circular":
+                return self.centre + 2.0 * math.atan(self.scale * (2.0 * x - 1.0))
+            return self.centre + 2.0 * math.atanh(self.scale * (2.0 * x - 1.0))
         scalar = np.ndim(s) == 0
         sa = np.asarray(s, dtype=np.float64)
         if self.mapping == "linear":
@@ -205,6 +216,17 @@ class Segment:
         >>> Segment(RationalBezier([[0, 0, 0], [1, 0, 0]]), 0.0, 2.0).segment_param(2.0)
         1.0
         """
+        if isinstance(t, (float, int)):
+            x = float(t)
+            if x == self.t0:
+                return 0.0
+            if x == self.t1:
+                return 1.0
+            if self.mapping == "linear":
+                return (x - self.t0) / (self.t1 - self.t0)
+            if self.mapping == "circular":
+                return 0.5 * (math.tan(0.5 * (x - self.centre)) / self.scale + 1.0)
+            return 0.5 * (math.tanh(0.5 * (x - self.centre)) / self.scale + 1.0)
         scalar = np.ndim(t) == 0
         ta = np.asarray(t, dtype=np.float64)
         if self.mapping == "linear":
