@@ -406,3 +406,46 @@ def test_bad_shapes(args, error):
 def test_bad_tolerance(tol):
     with pytest.raises(ToleranceError):
         api.intersections(seg(XY, (0, 0), (1, 0)), seg(XY, (0, 1), (1, 0)), tol=tol)
+
+
+# ----------------------------------------------------------------------------- more contacts
+def test_tangent_line_and_circle():
+    [hit] = api.intersections(circle(XY, 1.0), seg(XY, (-2, 1), (2, 1)))
+    assert hit.kind == "tangent"
+    assert hit.point == pytest.approx((0.0, 1.0, 0.0), abs=1e-7)
+    assert math.isclose(hit.t, math.pi / 2, abs_tol=1e-7)
+
+
+def test_identical_circles_give_one_overlap_over_the_whole_range():
+    c1 = circle(TILTED, 1.5)
+    c2 = circle(TILTED, 1.5)
+    [ov] = api.intersections(c1, c2)
+    assert isinstance(ov, EdgeOverlap)
+    assert ov.t == pytest.approx((0.0, 2 * math.pi), abs=1e-9)
+    assert ov.u == pytest.approx((0.0, 2 * math.pi), abs=1e-9)
+
+
+def test_line_through_a_wire_vertex():
+    wire = BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(1, 1, 0), gp_Pnt(2, 0, 0)).Wire()
+    line = seg(XY, (1, -1), (1, 3))
+    hits = api.intersections(wire, line)
+    # one result per wire edge (each touches the line at its end), one vertex overall
+    assert len(hits) == 2
+    assert all(h.point == pytest.approx((1.0, 1.0, 0.0), abs=1e-14) for h in hits)
+    assert vertex_points(api.intersect(wire, line)) == [pytest.approx((1.0, 1.0, 0.0), abs=1e-14)]
+
+
+def test_looping_spline_crosses_itself_across_spans():
+    loop = bd.Edge.make_spline([(0, 0), (2, 1), (2, -1), (0, 1), (0, -1), (1, -2)])
+    hits = api.intersections(loop)
+    theirs = occt_intersections(loop)
+    assert len(hits) == len([r for r in theirs if isinstance(r, EdgeIntersection)]) >= 1
+    check_on_edges(hits)
+    assert all(h.t < h.u and h.index_a == h.index_b == 0 for h in hits)
+
+
+def test_near_miss_within_tolerance_is_tangent_and_outside_is_nothing():
+    c = circle(XY, 1.0)
+    near = seg(XY, (-2, 1 + 1e-9), (2, 1 + 1e-9))
+    assert [h.kind for h in api.intersections(c, near, tol=1e-7)] == ["tangent"]
+    assert api.intersections(c, seg(XY, (-2, 1.001), (2, 1.001)), tol=1e-7) == []
