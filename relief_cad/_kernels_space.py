@@ -467,6 +467,8 @@ def space_pair_kernel(HA0, HB0, tol, budget, k):  # type: ignore[no-untyped-def]
         da = np.empty(3)
         pb = np.empty(3)
         db = np.empty(3)
+        qe = np.empty(3)
+        dqe = np.empty(3)
         for r in range(nres):
             kind = int(res[r, 1])
             if kind != KIND_CROSSING and kind != KIND_TANGENT:
@@ -487,13 +489,23 @@ def space_pair_kernel(HA0, HB0, tol, budget, k):  # type: ignore[no-untyped-def]
             t, u, gap = _polish(HA, HB, t, u, fix_t, fix_u, wka, wkb)
             if gap > tol:
                 continue
+            # a point inside an overlap, or at the place where one ends (a closed curve returns to
+            # it with another parameter), is part of that overlap
             inside = False
+            _dist2(HA, HB, t, u, wka, wkb, pa, da, pb, db)
             for q in range(nout):
                 if out[q, 0] == KIND_OVERLAP:
                     lo_u = min(out[q, 2], out[q, 4])
                     hi_u = max(out[q, 2], out[q, 4])
                     if out[q, 1] - 1e-9 <= t <= out[q, 3] + 1e-9 and lo_u - 1e-9 <= u <= hi_u + 1e-9:
                         inside = True
+                    for te in (out[q, 1], out[q, 3]):
+                        _eval3(HA, te, wka, qe, dqe)
+                        gap_e = 0.0
+                        for j in range(3):
+                            gap_e += (qe[j] - pa[j]) ** 2
+                        if math.sqrt(gap_e) <= tol:
+                            inside = True
             if inside:
                 continue
             ckind = KIND_TANGENT
