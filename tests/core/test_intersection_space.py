@@ -278,3 +278,31 @@ def test_bad_input() -> None:
     with pytest.raises(InputTypeError) as info:
         intersect_space(a, "b")  # type: ignore[arg-type]
     assert isinstance(info.value, ReliefCadError) and isinstance(info.value, TypeError)
+
+
+def test_curves_in_a_plane_through_the_projection_centre() -> None:
+    """Both curves lie in the plane x = 0 through O, in front of it: the model frame's projection
+    flattens them onto one line (an image overlap that is not a space overlap), so another frame is
+    taken and the real crossing is found."""
+    a = RationalBezier([[0.0, -1.0, 1.0], [0.0, 0.0, 3.0], [0.0, 1.0, 1.0]])  # z = 1 + 4t(1-t), y = 2t - 1
+    b = RationalBezier([[0.0, -1.0, 1.5], [0.0, 1.0, 1.5]])  # z = 1.5
+    res = intersect_space(a, b)
+    # 1 + 4t(1-t) = 1.5  ->  t = (2 -+ sqrt(2)) / 4 ; y = 2t - 1 = 2u - 1  ->  u = t
+    roots = [(2 - math.sqrt(2)) / 4, (2 + math.sqrt(2)) / 4]
+    assert [r.kind for r in res] == ["crossing", "crossing"], res
+    for r, t in zip(res, roots):
+        assert abs(r.t - t) <= 1e-12 and abs(r.u - t) <= 1e-12
+    assert relief_scheme(a, b).frame.name == "model"  # the frame that first sees the artefact
+    top = intersect_space(a, RationalBezier([[0.0, -1.0, 2.0], [0.0, 1.0, 2.0]]))  # z = 2 touches at t = 1/2
+    assert len(top) == 1 and top[0].kind == "tangent" and abs(top[0].t - 0.5) <= 1e-7
+
+
+@pytest.mark.parametrize(("scale", "shift"), TRANSFORMS)
+def test_overlaps_survive_scaling_and_translation(scale: float, shift: np.ndarray) -> None:
+    # rounding the transformed data moves the truth by about eps * |shift| / scale in parameter
+    ptol = 1e-9 + 10 * np.finfo(float).eps * float(np.abs(shift).max()) / scale
+    for _, a, b, t, u in overlap_cases():
+        res = intersect_space(transform(a, scale, shift), transform(b, scale, shift))
+        overlaps = [r for r in res if isinstance(r, Overlap)]
+        assert len(overlaps) == 1 and len(res) == 1, res
+        assert overlaps[0].t == pytest.approx(t, abs=ptol) and overlaps[0].u == pytest.approx(u, abs=ptol)
