@@ -287,6 +287,12 @@ def write_report(
             f"<th class='l'>kind</th><th class='l'>right</th><th class='l'>why</th></tr></thead>"
             f"<tbody>{''.join(rows)}</tbody></table></div></div>"
         )
+    # rendering check for headless browsers: count the images that decoded
+    parts.append(
+        "<script>window.addEventListener('load',function(){var n=0;for(var i of document.images)"
+        "{if(i.complete&&i.naturalWidth>0)n++;}document.body.setAttribute('data-images-ok',n);"
+        "document.body.setAttribute('data-images',document.images.length);});</script>"
+    )
     parts.append("</body></html>")
     outdir = Path(out)
     outdir.mkdir(parents=True, exist_ok=True)

@@ -56,6 +56,10 @@ def _warm_up() -> None:
             _bezier_edge(np.array([[0, 0], [1, 2], [2, -1], [3, 1.0]])),
             _bezier_edge(np.array([[0, 1], [1, -1], [2, 2], [3, 0.0]]), np.array([1, 2, 1, 1.0])),
         )
+        compare(
+            _bezier_edge(np.array([[0, 0, 0], [1, 2, 1], [2, -1, 1], [3, 1, 0.0]])),
+            _bezier_edge(np.array([[0, 1, 0.5], [1, -1, 0], [2, 2, 1], [3, 0, 0.5]])),
+        )
     except Exception:  # noqa: BLE001 - the real run reports errors per item
         pass
 

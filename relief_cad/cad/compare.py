@@ -231,6 +231,16 @@ class ExactCurve:
         p1, p0 = self.value(hi), self.value(lo)
         return [(p1[k] - p0[k]) / (hi - lo) for k in range(3)]
 
+    def jet(self, t: Any) -> tuple[list[Any], list[Any], list[Any]]:
+        """Return ``P(t)``, ``P'(t)`` and ``P''(t)`` (central differences, step ``10**(-dps/3)``)."""
+        mp = self.mp
+        h = mp.mpf(10) ** (-(mp.dps // 3)) * max(mp.mpf(1), abs(mp.mpf(self.last - self.first)))
+        t = mp.mpf(t)
+        p0, pm, pp = self.value(t), self.value(t - h), self.value(t + h)
+        d1 = [(pp[k] - pm[k]) / (2 * h) for k in range(3)]
+        d2 = [(pp[k] - 2 * p0[k] + pm[k]) / (h * h) for k in range(3)]
+        return p0, d1, d2
+
     def clamp(self, t: Any) -> Any:
         """Clamp ``t`` into the edge's parameter range."""
         return min(max(t, self.mp.mpf(self.first)), self.mp.mpf(self.last))
@@ -308,33 +318,40 @@ def _exact(edge: Any, cache: dict[int, ExactCurve] | None = None) -> ExactCurve:
 def _refine(
     ca: ExactCurve, cb: ExactCurve, t0: float, u0: float, *, same: bool = False
 ) -> tuple[Any, Any, Any]:
-    """Gauss-Newton on a(t) - b(u) (a local minimum of the distance), clamped to the ranges.
+    """Newton on the gradient of ``|a(t) - b(u)|**2 / 2``: a local minimum of the distance.
 
-    Each iteration also tries the doubled step, which restores fast convergence at tangent
-    contacts (a double root, where plain Gauss-Newton only halves the error).
+    The full Hessian (with the curvature terms ``r . a''``) makes near misses converge
+    quadratically; where it is not positive definite the Gauss-Newton matrix is used. Each
+    iteration also tries the doubled step, which restores fast convergence at tangent
+    contacts (a double root), and backtracks when the distance would grow. Parameters are
+    clamped to the edges' ranges.
     """
     mp = ca.mp
     t, u = ca.clamp(mp.mpf(t0)), cb.clamp(mp.mpf(u0))
     size = max(ca.size, cb.size)
     eps2 = (mp.mpf(10) ** (-(mp.dps - 8)) * size) ** 2
-    rel = mp.mpf(10) ** (-(mp.dps - 6))
+    rel = mp.mpf(10) ** (-(mp.dps // 2))
 
     def d2(tt: Any, uu: Any) -> Any:
         qa, qb = ca.value(tt), cb.value(uu)
         return sum((qa[k] - qb[k]) ** 2 for k in range(3))
 
-    pa, pb = ca.value(t), cb.value(u)
-    cur = sum((pa[k] - pb[k]) ** 2 for k in range(3))
+    cur = d2(t, u)
     for _ in range(150):
         if cur < eps2:
             break
+        pa, da, dda = ca.jet(t)
+        pb, db, ddb = cb.jet(u)
         r = [pa[k] - pb[k] for k in range(3)]
-        da, db = ca.derivative(t), cb.derivative(u)
+        g1 = sum(da[k] * r[k] for k in range(3))
+        g2 = -sum(db[k] * r[k] for k in range(3))
         a11 = sum(x * x for x in da)
         a22 = sum(x * x for x in db)
         a12 = -sum(da[k] * db[k] for k in range(3))
-        g1 = sum(da[k] * r[k] for k in range(3))
-        g2 = -sum(db[k] * r[k] for k in range(3))
+        h11 = a11 + sum(dda[k] * r[k] for k in range(3))
+        h22 = a22 - sum(ddb[k] * r[k] for k in range(3))
+        if h11 > 0 and h22 > 0 and h11 * h22 - a12 * a12 > 0:
+            a11, a22 = h11, h22
         lam = (a11 + a22) * mp.mpf(10) ** (-(mp.dps - 10))
         det = (a11 + lam) * (a22 + lam) - a12 * a12
         if det == 0:
@@ -348,17 +365,15 @@ def _refine(
         if val < best[0]:
             best = (val, nt, nu)
         step = mp.mpf(1)
-        while best[0] > cur and step > mp.mpf(2) ** -30:  # damped
+        while best[0] > cur and step > mp.mpf(2) ** -40:  # backtrack
             step /= 2
             nt, nu = ca.clamp(t + step * dt), cb.clamp(u + step * du)
             best = (d2(nt, nu), nt, nu)
         if best[0] > cur:
             break
-        _, nt, nu = best
+        val, nt, nu = best
         small = abs(nt - t) <= (abs(t) + 1) * rel and abs(nu - u) <= (abs(u) + 1) * rel
-        t, u = nt, nu
-        pa, pb = ca.value(t), cb.value(u)
-        cur = sum((pa[k] - pb[k]) ** 2 for k in range(3))
+        t, u, cur = nt, nu, val
         if small:
             break
     return t, u, mp.sqrt(cur)
@@ -963,7 +978,9 @@ def plot_pair_png(
         else:
             continue
         ax.plot(q[:, 0], q[:, 1], marker="o", ms=18, mfc="none", color="orange", mew=2)
-    ax.set_aspect("equal", adjustable="datalim")
+    span = np.ptp(proj(pts), axis=0)
+    if span.min() > 0 and span.max() / span.min() < 8:
+        ax.set_aspect("equal", adjustable="datalim")
     ax.set_title(title or "relief_cad (blue o) vs OCCT (red x); disagreements ringed", fontsize=8)
     ax.tick_params(labelsize=7)
     buf = io.BytesIO()

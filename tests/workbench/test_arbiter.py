@@ -1,0 +1,125 @@
+"""compare() and its arbiter on pairs whose truth is known independently (sympy, closed forms)."""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import pytest
+
+from relief_cad.cad.compare import arbitrate_overlap, arbitrate_point, compare
+from relief_cad.cad.results import EdgeIntersection, EdgeOverlap
+
+from ._pairs import bezier, chebyshev_pair, flat_contact, segment
+
+
+def point(t, u, p, kind="crossing"):
+    return EdgeIntersection(0, 0, None, None, t, u, tuple(p), kind)
+
+
+def test_agreement_where_occt_is_right_with_the_real_relief_cad():
+    # two cubics crossing at t = u = 1/2 in (1.5, 0.5) (dyadic data) and at other points
+    a = bezier([(0, 0, 0), (1, 2, 0), (2, -1, 0), (3, 1, 0)])
+    b = segment((0, 0.5, 0), (3, 0.5, 0))
+    c = compare(a, b)
+    assert c.errors == {}
+    assert c.disagreements == [] and c.agree
+    assert c.routes == ["Geom2dInt_GInter"]
+    # truth: y(t) = 6t(1-t)^2 - 3t^2(1-t) + t^3 = 1/2 -> 20t^3 - 27t^2 + 12t... solve numerically
+    assert len(c.agreed) == 3
+    assert any(m.relief.t == pytest.approx(0.5, abs=1e-9) for m in c.agreed)
+    for m in c.agreed:
+        assert m.distance <= c.tol
+        assert m.relief_error <= c.tol and m.occt_error <= c.tol
+    text = str(c)
+    assert "3 agreed, 0 disagreement(s)" in text and "Geom2dInt_GInter" in text
+    html = c.to_html(plot=True)
+    assert "<table>" in html and "data:image/png;base64," in html
+
+
+def test_occt_misses_crossings_of_a_high_degree_ill_conditioned_curve():
+    curve, axis, roots = chebyshev_pair(20)
+    assert len(roots) == 20
+    # the truth, given as relief_cad's answer: x = 2t - 1, the axis parameter is u = x + 1
+    truth = [point(t, 2 * t, (2 * t - 1, 0.0, 0.0)) for t in roots]
+    c = compare(curve, axis, relief=truth)
+    occt_points = [r for r in c.occt if isinstance(r, EdgeIntersection)]
+    assert c.routes == ["Geom2dInt_GInter"]
+    missed = [d for d in c.disagreements if d.claimant == "relief_cad"]
+    assert missed, "OCCT was expected to miss crossings here"
+    for d in missed:
+        assert d.verdict.winner == "relief_cad" and d.verdict.truth == "crossing"
+        assert d.verdict.distance < 1e-30
+    # every OCCT-only claim is a duplicate or spurious: never right
+    for d in c.disagreements:
+        if d.claimant == "occt":
+            assert d.verdict.winner == "relief_cad"
+    # agreed + missed accounts for every true root exactly once
+    assert len(c.agreed) + len(missed) == 20
+    assert len(occt_points) >= len(c.agreed)
+
+
+def test_occt_turns_a_flat_tangency_into_a_segment_and_the_arbiter_says_tangent_point():
+    curve, axis = flat_contact(8)
+    c = compare(curve, axis, relief=[point(0.5, 1.0, (0.0, 0.0, 0.0), "tangent")])
+    overlaps = [r for r in c.occt if isinstance(r, EdgeOverlap)]
+    assert len(overlaps) == 1 and overlaps[0].t[0] < 0.5 < overlaps[0].t[1]
+    (d,) = c.disagreements
+    assert d.claimant == "occt" and d.verdict.truth == "tangent" and d.verdict.winner == "relief_cad"
+    assert "tangent point, not an overlap" in d.verdict.reason
+    assert len(d.counter) == 1  # relief_cad's tangent point inside the claimed range
+
+
+def test_real_relief_cad_on_the_flat_tangency_gets_the_tangent_verdict():
+    curve, axis = flat_contact(8)
+    c = compare(curve, axis)
+    assert c.errors == {}
+    ov = [d for d in c.disagreements if d.claimant == "occt" and isinstance(d.claim, EdgeOverlap)]
+    assert len(ov) == 1 and ov[0].verdict.truth == "tangent"
+
+
+def test_duplicate_tangent_points_from_occt_are_judged_duplicates():
+    curve, axis = flat_contact(4)
+    c = compare(curve, axis, relief=[point(0.5, 1.0, (0.0, 0.0, 0.0), "tangent")])
+    assert len(c.agreed) == 1
+    assert c.disagreements, "OCCT reports this x^4 contact several times"
+    for d in c.disagreements:
+        assert d.claimant == "occt" and d.verdict.truth == "duplicate" and d.verdict.winner == "relief_cad"
+
+
+def test_a_spurious_point_and_a_missed_overlap():
+    a, b = segment((0, 0, 0), (2, 0, 0)), segment((1, 1e-3, 0), (1, 1, 0))
+    c = compare(a, b, relief=[point(1.0, 0.0, (1.0, 0.0, 0.0))])
+    (d,) = c.disagreements
+    assert d.claimant == "relief_cad" and d.verdict.winner == "occt" and d.verdict.truth == "nothing"
+    assert d.verdict.distance == pytest.approx(1e-3, rel=1e-12)
+    a, b = segment((0, 0, 0), (2, 0, 0)), segment((1, 0, 0), (3, 0, 0))
+    c = compare(a, b, relief=[])
+    (d,) = c.disagreements
+    assert d.claimant == "occt" and d.verdict.winner == "occt" and d.verdict.truth == "overlap"
+
+
+@pytest.mark.parametrize("gap, holds", [(0.5e-7, True), (3e-7, False)])
+def test_arbitrate_point_judges_a_near_miss_by_its_true_distance(gap, holds):
+    # a circle-like cubic arc touching y = gap from below at its top
+    a = bezier([(0, 0, 0), (0, 1, 0), (2, 1, 0), (2, 0, 0)])  # top at t = 1/2, y = 3/4
+    height = 0.75 + gap
+    b = segment((0, height, 0), (2, height, 0))
+    true_gap = float(Fraction(height) - Fraction(3, 4))  # the binary64 line's exact offset
+    chk = arbitrate_point(a, b, 0.49, 0.98, tol=1e-7)
+    assert chk.holds is holds
+    assert chk.distance == pytest.approx(true_gap, rel=1e-15, abs=0)
+    assert chk.t == pytest.approx(0.5, abs=1e-15)
+    assert chk.kind == ("tangent" if holds else "miss")
+
+
+def test_arbitrate_overlap_on_a_curve_and_a_piece_of_itself():
+    # b is a(t) on [1/4, 3/4], reversed: blossom values a(3/4^(3-i), 1/4^i), exact in binary64
+    a = bezier([(0, 0, 0), (1, 2, 0), (3, 2, 0), (4, 0, 0)])
+    b = bezier([(3.09375, 1.125, 0), (2.40625, 1.625, 0), (1.59375, 1.625, 0), (0.90625, 1.125, 0)])
+    chk = arbitrate_overlap(a, b, (0.25, 0.75), (1.0, 0.0), tol=1e-7)
+    assert chk.status == "coincident" and chk.holds and chk.max_distance < 1e-40
+    far = arbitrate_overlap(a, segment((0, 1.5, 0), (4, 1.5, 0)), (0.0, 1.0), (0.0, 4.0), tol=1e-7)
+    assert not far.holds and far.status == "tangent"
+    assert [p.t for p in far.points] == [pytest.approx(0.5, abs=1e-15)]
+    assert math.isclose(far.points[0].point[1], 1.5, abs_tol=1e-15)
