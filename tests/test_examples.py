@@ -185,3 +185,84 @@ def test_build123d_sketch(tmp_path: Path) -> None:
     assert part.volume == pytest.approx(volume, rel=1e-6)
 
     _check_png(out / "sketch_intersections.png")
+
+
+# --------------------------------------------------------------------------- paper_figure.py
+
+_FIG1 = re.compile(r"X\d = \(([^)]*)\)\s+phi\(X\) = \(([^)]*)\)\s+seen from S on z=1: \(([^)]*)\)")
+_CAND = re.compile(r"candidate\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)\s+(real|not real)")
+_REAL = re.compile(r"real R at t=(\S+) u=(\S+): \((\S+), (\S+), (\S+)\) (\w+)")
+
+
+def _floats(s: str) -> np.ndarray:
+    return np.array([float(v) for v in s.split(",")])
+
+
+def test_paper_figure(tmp_path: Path) -> None:
+    import sympy as sp
+
+    out = tmp_path / "paper"
+    stdout = _run("paper_figure.py", str(out))
+    mod = _load("paper_figure.py")
+    k = 2.0
+
+    # Figure 1: phi(X) = (1+k) X / (z+k); the central projection from S = (0,0,-k) onto z=1
+    # lands under the relief (the paper's property), both by closed form.
+    fig1 = _FIG1.findall(stdout)
+    assert len(fig1) == 2
+    for xs, xrs, foots in fig1:
+        x, xr, foot = _floats(xs), _floats(xrs), _floats(foots)
+        assert np.allclose(xr, (1 + k) * x / (x[2] + k), atol=1e-9)
+        s = np.array([0.0, 0.0, -k])
+        assert np.allclose(foot, s + (x - s) * (1 + k) / (x[2] + k), atol=1e-9)
+        assert np.allclose(foot[:2], xr[:2], atol=1e-9)
+
+    # Figure 2: the candidates are where the lifts L_a(t), L_b(u) lie on one ray through O
+    # (cross product 0); solved exactly with sympy from the control points.
+    t, u = sp.symbols("t u")
+
+    def bern(points: np.ndarray, var: sp.Symbol) -> list[sp.Expr]:
+        n = len(points) - 1
+        return [sp.expand(sum(sp.binomial(n, i) * var**i * (1 - var) ** (n - i) * sp.Rational(float(points[i, c]))
+                              for i in range(n + 1))) for c in range(3)]
+
+    la, lb = bern(mod.LIFT_A, t), bern(mod.LIFT_B, u)
+    e1 = sp.expand(la[0] * lb[2] - la[2] * lb[0])
+    e2 = sp.expand(la[1] * lb[2] - la[2] * lb[1])
+    res = sp.Poly(sp.resultant(e1, e2, u), t)
+    truth = []
+    for (lo, hi), _mult in res.intervals(eps=sp.Rational(1, 10**25)):  # exact isolation of real roots
+        tv = (lo + hi) / 2
+        if not (-sp.Rational(1, 10**12) <= tv <= 1 + sp.Rational(1, 10**12)):
+            continue
+        for (ulo, uhi), _m in sp.Poly(e1.subs(t, tv), u).intervals(eps=sp.Rational(1, 10**20)):
+            uv = (ulo + uhi) / 2
+            if not (-sp.Rational(1, 10**12) <= uv <= 1 + sp.Rational(1, 10**12)):
+                continue
+            pa = np.array([float(c.subs(t, tv)) for c in la])
+            pb = np.array([float(c.subs(u, uv)) for c in lb])
+            if abs(float(e2.subs({t: tv, u: uv}))) < 1e-12 and pa @ pb > 0:
+                truth.append((float(tv), float(uv), pa, pb))
+    cands = _CAND.findall(stdout)
+    assert len(cands) == len(truth) == 2
+    for tv, uv, pa, pb in truth:
+        row = min(cands, key=lambda r: abs(float(r[0]) - tv) + abs(float(r[1]) - uv))
+        assert abs(float(row[0]) - tv) < 1e-9 and abs(float(row[1]) - uv) < 1e-9
+        assert np.allclose([float(row[2]), float(row[3])], pa[:2] / pa[2], atol=1e-7)
+        gap = float(np.linalg.norm(pa - pb))
+        assert float(row[4]) == pytest.approx(gap, rel=1e-3, abs=1e-12)
+        assert (row[5] == "real") == (gap < 1e-9)
+
+    # the real intersection: t = u = 1/2 by construction, R = phi^-1(L_a(1/2)) exactly
+    real = _REAL.findall(stdout)
+    assert len(real) == 1
+    m = [sp.Rational(1, 8) * (sp.Rational(float(mod.LIFT_A[0, c])) + 3 * sp.Rational(float(mod.LIFT_A[1, c]))
+         + 3 * sp.Rational(float(mod.LIFT_A[2, c])) + sp.Rational(float(mod.LIFT_A[3, c]))) for c in range(3)]
+    r_exact = [float(sp.Rational(2) * c / (3 - m[2])) for c in m]
+    assert float(real[0][0]) == pytest.approx(0.5, abs=1e-10)
+    assert float(real[0][1]) == pytest.approx(0.5, abs=1e-10)
+    assert np.allclose([float(v) for v in real[0][2:5]], r_exact, atol=1e-10)
+    assert real[0][5] == "crossing"
+
+    _check_png(out / "paper_figure1.png")
+    _check_png(out / "paper_figure2.png", min_w=500, min_h=400)
