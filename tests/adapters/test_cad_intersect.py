@@ -293,6 +293,11 @@ def test_looping_bezier_crosses_itself_once():
         lambda: bd.Edge.make_spline([(0, 0), (2, 1), (1, 3), (-1, 2)], periodic=True),
         lambda: bd.Face.make_rect(2, 1),
         lambda: bd.Solid.make_box(1, 2, 3),
+        lambda: bd.Solid.make_cylinder(1, 2),
+        lambda: bd.Solid.make_sphere(1),
+        lambda: bd.Solid.make_cone(1, 0, 2),
+        lambda: bd.fillet(bd.Box(2, 2, 2).edges(), 0.3),
+        lambda: bd.Text("S", 10),
     ],
 )
 def test_simple_shapes_have_no_self_intersections(shape):
@@ -449,3 +454,24 @@ def test_near_miss_within_tolerance_is_tangent_and_outside_is_nothing():
     near = seg(XY, (-2, 1 + 1e-9), (2, 1 + 1e-9))
     assert [h.kind for h in api.intersections(c, near, tol=1e-7)] == ["tangent"]
     assert api.intersections(c, seg(XY, (-2, 1.001), (2, 1.001)), tol=1e-7) == []
+
+
+@pytest.mark.parametrize(
+    ("blocked", "module"),
+    [("build123d", "relief_cad.cad.build123d"), ("cadquery", "relief_cad.cad.cadquery"),
+     ("OCP", "relief_cad.cad")],
+)
+def test_missing_cad_package_gives_install_hint(blocked, module):
+    import subprocess
+    import sys
+
+    code = (
+        f"import sys; sys.modules[{blocked!r}] = None\n"
+        "from relief_cad.errors import AdapterUnavailableError\n"
+        "try:\n"
+        f"    import {module}\n"
+        "except AdapterUnavailableError as exc:\n"
+        "    print('HINT', exc)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert 'pip install "relief-cad[cad]"' in out
