@@ -266,3 +266,98 @@ def test_paper_figure(tmp_path: Path) -> None:
 
     _check_png(out / "paper_figure1.png")
     _check_png(out / "paper_figure2.png", min_w=500, min_h=400)
+
+
+# --------------------------------------------------------------------------- step_intersections.py
+
+_STEP_ROW = re.compile(
+    r"^\s*(\d+) (\d+):\w+\s+(\d+):\w+\s+(crossing|tangent)\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)\s*$", re.MULTILINE
+)
+
+
+def _occt_meeting_points(edges_a: list, edges_b: list, tol: float = 1e-6) -> list[np.ndarray]:
+    """Points where edges meet, by OCCT's BRepExtrema_DistShapeShape on every edge pair (independent of relief_cad)."""
+    from OCP.Bnd import Bnd_Box
+    from OCP.BRepBndLib import BRepBndLib
+    from OCP.BRepExtrema import BRepExtrema_DistShapeShape
+
+    def box(e):
+        b = Bnd_Box()
+        BRepBndLib.Add_s(e, b)
+        return b
+
+    boxes_b = [box(e) for e in edges_b]
+    points: list[np.ndarray] = []
+    for ea in edges_a:
+        ba = box(ea)
+        for eb, bb in zip(edges_b, boxes_b):
+            if ba.IsOut(bb):
+                continue
+            ext = BRepExtrema_DistShapeShape(ea, eb)
+            if not ext.IsDone() or ext.Value() > tol:
+                continue
+            for k in range(1, ext.NbSolution() + 1):
+                p = np.array(ext.PointOnShape1(k).Coord())
+                if not any(np.linalg.norm(p - q) < 1e-5 for q in points):
+                    points.append(p)
+    return points
+
+
+def _check_step_run(stdout: str, path_a: Path, path_b: Path, out: Path) -> int:
+    import json
+
+    from relief_cad.cad.occt import unique_edges
+
+    mod = _load("step_intersections.py")
+    edges_a, edges_b = unique_edges(mod.read_step(path_a)), unique_edges(mod.read_step(path_b))
+    assert f"{path_a.name}: {len(edges_a)} edges; {path_b.name}: {len(edges_b)} edges" in stdout
+    rows = _STEP_ROW.findall(stdout)
+    assert len(rows) == int(re.search(r"relief_cad: (\d+) result", stdout).group(1)) > 0
+    printed = []
+    for _i, ia, ib, _kind, x, y, z, t, u in rows:
+        p = np.array([float(x), float(y), float(z)])
+        assert np.linalg.norm(_value(edges_a[int(ia)], float(t)) - p) < 1e-5
+        assert np.linalg.norm(_value(edges_b[int(ib)], float(u)) - p) < 1e-5
+        printed.append(p)
+    truth = _occt_meeting_points(edges_a, edges_b)
+    assert len(truth) == len(printed)
+    for p in truth:
+        assert min(np.linalg.norm(p - q) for q in printed) < 1e-5
+
+    report = out / "report.html"
+    text = report.read_text(encoding="utf-8")
+    assert text.startswith("<!DOCTYPE html>") and "relief_cad vs OCCT" in text
+    assert "<table>" in text and "data:image/png;base64," in text
+    data = json.loads((out / "comparison.json").read_text(encoding="utf-8"))
+    assert data["score"]["agreed"] == len(rows) and data["disagreements"] == []
+    assert len(data["relief_cad"]) == len(rows)
+    return len(rows)
+
+
+def test_step_intersections_bundled(tmp_path: Path) -> None:
+    out = tmp_path / "step"
+    stdout = _run("step_intersections.py", "--out", str(out))
+    bundled = EXAMPLES.parent / "workbench" / "data" / "step"
+    n = _check_step_run(stdout, bundled / "bracket.step", bundled / "knob.step", out)
+    # the knob's rim (radius 10 at z = 3) crosses the bracket's long edges y = +-8 at x = +-6
+    for x in (-6.0, 6.0):
+        for y in (-8.0, 8.0):
+            assert re.search(rf"\s{x:.6f}\s+{y:.6f}\s+3\.000000\s", stdout), (x, y)
+    assert n == 8
+
+
+def test_step_intersections_given_files(tmp_path: Path) -> None:
+    mod = _load("step_intersections.py")
+    path_a, path_b = mod.make_demo_parts(tmp_path / "parts")
+    out = tmp_path / "step"
+    stdout = _run("step_intersections.py", str(path_a), str(path_b), "--out", str(out))
+    assert _check_step_run(stdout, path_a, path_b, out) >= 2
+
+
+def test_step_intersections_bad_file(tmp_path: Path) -> None:
+    bad = tmp_path / "broken.step"
+    bad.write_text("ISO-10303-21;\nthis is not a STEP file\n")
+    proc = subprocess.run([sys.executable, str(EXAMPLES / "step_intersections.py"), str(bad), str(bad),
+                           "--out", str(tmp_path / "o")], capture_output=True, text=True, timeout=120,
+                          env=dict(os.environ, MPLBACKEND="Agg"))
+    assert proc.returncode != 0 and "cannot read STEP file" in proc.stderr
