@@ -306,3 +306,39 @@ def test_overlaps_survive_scaling_and_translation(scale: float, shift: np.ndarra
         overlaps = [r for r in res if isinstance(r, Overlap)]
         assert len(overlaps) == 1 and len(res) == 1, res
         assert overlaps[0].t == pytest.approx(t, abs=ptol) and overlaps[0].u == pytest.approx(u, abs=ptol)
+
+
+def test_kernel_projection_is_psi_of_phi_from_the_foundation_objects() -> None:
+    """The compiled hot path projects exactly as the paper's explicit maps do."""
+    from relief_cad import ReliefPerspective, central_projection
+    from relief_cad._kernels_space import _project
+
+    rng = np.random.default_rng(3)
+    for k in (0.5, 2.0, 7.0):
+        a = RationalBezier(rng.random((5, 3)) + [0, 0, 1.0], rng.random(5) + 0.5)
+        b = RationalBezier(rng.random((4, 3)) + [0, 0, 1.0])
+        scheme = relief_scheme(a, b, k=k)
+        p2 = np.empty((5, 2))
+        w2 = np.empty(5)
+        assert _project(a.homogeneous, scheme.frame.matrix, k, p2, w2)
+        image = central_projection(ReliefPerspective(k).apply(a.transformed(scheme.frame.matrix)))
+        np.testing.assert_allclose(p2, image.control_points, rtol=1e-14, atol=1e-14)
+        np.testing.assert_allclose(w2, image.weights, rtol=1e-14)
+        np.testing.assert_allclose(scheme.a_image.control_points, image.control_points, rtol=1e-14, atol=1e-14)
+        np.testing.assert_allclose(scheme.a_relief(SAMPLES), ReliefPerspective(k).apply(scheme.a_frame(SAMPLES)), atol=1e-13)
+
+
+SAMPLES = np.linspace(0.0, 1.0, 11)
+
+
+def test_budget_exhaustion_is_reported_never_silent() -> None:
+    from relief_cad.errors import BudgetExceededError
+
+    a, b, _, _ = meeting_pair(3)
+    with pytest.raises(BudgetExceededError) as info:
+        intersect_space(a, b, budget=1)
+    assert info.value.unresolved and isinstance(info.value, RuntimeError)
+    partial = intersect_space(a, b, budget=1, on_budget="return")
+    assert not partial.complete and partial.unresolved
+    for box in partial.unresolved:
+        assert 0.0 <= box.t0 <= box.t1 <= 1.0 and 0.0 <= box.u0 <= box.u1 <= 1.0

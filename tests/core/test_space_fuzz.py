@@ -8,7 +8,7 @@ import sys
 from pathlib import Path
 
 import numpy as np
-from hypothesis import assume, given, settings
+from hypothesis import assume, given, note, settings
 from hypothesis import strategies as st
 
 from relief_cad import RationalBezier
@@ -73,6 +73,8 @@ def safe(a: RationalBezier, b: RationalBezier | None) -> list[Intersection | Ove
 @given(space_pair())
 def test_no_exception_but_relief_cad_errors_and_swap_symmetry(pair: tuple[RationalBezier, RationalBezier]) -> None:
     a, b = pair
+    note(f"a = {a.control_points.tolist()!r}, {a.weights.tolist()!r}")
+    note(f"b = {b.control_points.tolist()!r}, {b.weights.tolist()!r}")
     res = safe(a, b)
     if res is None:
         return
