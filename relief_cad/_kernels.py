@@ -298,6 +298,7 @@ def _newton(HA, HB, t, u, wa, wb, iters):  # type: ignore[no-untyped-def]
     bt = t
     bu = u
     bres = math.inf
+    stall = 0
     for _ in range(iters):
         ax, ay, adx, ady, _a2, _a3 = _eval(HA, t, wa)
         bx, by, bdx, bdy, _b2, _b3 = _eval(HB, u, wb)
@@ -308,6 +309,11 @@ def _newton(HA, HB, t, u, wa, wb, iters):  # type: ignore[no-untyped-def]
             bres = res
             bt = t
             bu = u
+            stall = 0
+        else:
+            stall += 1
+            if stall >= 3:
+                break
         if res == 0.0:
             break
         det = -adx * bdy + ady * bdx
@@ -323,6 +329,16 @@ def _newton(HA, HB, t, u, wa, wb, iters):  # type: ignore[no-untyped-def]
             break
         t = nt
         u = nu
+        if abs(dt) <= 1e-15 and abs(du) <= 1e-15:
+            # converged to rounding: one last evaluation decides
+            ax, ay, adx, ady, _a2, _a3 = _eval(HA, t, wa)
+            bx, by, bdx, bdy, _b2, _b3 = _eval(HB, u, wb)
+            res = math.hypot(ax - bx, ay - by)
+            if res < bres:
+                bres = res
+                bt = t
+                bu = u
+            break
     return bt, bu, bres
 
 
@@ -488,6 +504,26 @@ def _point_on(H, px, py, tol, S, C, V, e, wk):  # type: ignore[no-untyped-def]
 
 
 @njit(cache=True)
+def _local_dist(H, px, py, u, wk):  # type: ignore[no-untyped-def]
+    """Distance from ``(px, py)`` to curve ``H`` near ``u`` (a few projection Newton steps)."""
+    for _ in range(8):
+        x, y, dx, dy, ddx, ddy = _eval(H, u, wk)
+        fx = x - px
+        fy = y - py
+        h = dx * dx + dy * dy + fx * ddx + fy * ddy
+        if h <= 0.0:
+            h = dx * dx + dy * dy
+            if h == 0.0:
+                break
+        nu = min(1.0, max(0.0, u - (fx * dx + fy * dy) / h))
+        if nu == u:
+            break
+        u = nu
+    x, y, _dx, _dy, _ddx, _ddy = _eval(H, u, wk)
+    return math.hypot(x - px, y - py)
+
+
+@njit(cache=True)
 def _angle_sin(HA, HB, t, u, wa, wb):  # type: ignore[no-untyped-def]
     """``|sin|`` of the angle between the curves' tangents at ``a(t)``, ``b(u)``.
 
@@ -506,6 +542,112 @@ def _angle_sin(HA, HB, t, u, wa, wb):  # type: ignore[no-untyped-def]
     if la == 0.0 or lb == 0.0:
         return 1.0
     return abs(adx * bdy - ady * bdx) / (la * lb)
+
+
+# --------------------------------------------------------------------------- double-double
+
+
+@njit(cache=True)
+def _two_sum(a, b):  # type: ignore[no-untyped-def]
+    s = a + b
+    bb = s - a
+    return s, (a - (s - bb)) + (b - bb)
+
+
+@njit(cache=True)
+def _two_prod(a, b):  # type: ignore[no-untyped-def]
+    p = a * b
+    c = 134217729.0 * a
+    ah = c - (c - a)
+    al = a - ah
+    c = 134217729.0 * b
+    bh = c - (c - b)
+    bl = b - bh
+    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
+
+
+@njit(cache=True)
+def _dd_add(ah, al, bh, bl):  # type: ignore[no-untyped-def]
+    s, e = _two_sum(ah, bh)
+    e += al + bl
+    return _two_sum(s, e)
+
+
+@njit(cache=True)
+def _dd_mul(ah, al, bh, bl):  # type: ignore[no-untyped-def]
+    p, e = _two_prod(ah, bh)
+    e += ah * bl + al * bh
+    return _two_sum(p, e)
+
+
+@njit(cache=True)
+def _dd_div(ah, al, bh, bl):  # type: ignore[no-untyped-def]
+    q1 = ah / bh
+    ph, pl = _dd_mul(q1, 0.0, bh, bl)
+    rh, rl = _dd_add(ah, al, -ph, -pl)
+    q2 = rh / bh
+    return _two_sum(q1, q2)
+
+
+@njit(cache=True)
+def _eval_dd(H, t, wk):  # type: ignore[no-untyped-def]
+    """Point of the rational curve ``H`` at ``t`` in double-double ``(xh, xl, yh, yl)``.
+
+    de Casteljau with every operation error-free-transformed (``wk``: scratch of
+    shape ``(m, 6)``), so the result is accurate to about ``eps**2 * cond``.
+    """
+    m = H.shape[0]
+    sh, sl = _two_sum(1.0, -t)
+    for i in range(m):
+        for k in range(3):
+            wk[i, 2 * k] = H[i, k]
+            wk[i, 2 * k + 1] = 0.0
+    for r in range(1, m):
+        for i in range(0, m - r):
+            for k in range(3):
+                ph, pl = _dd_mul(sh, sl, wk[i, 2 * k], wk[i, 2 * k + 1])
+                qh, ql = _dd_mul(t, 0.0, wk[i + 1, 2 * k], wk[i + 1, 2 * k + 1])
+                vh, vl = _dd_add(ph, pl, qh, ql)
+                wk[i, 2 * k] = vh
+                wk[i, 2 * k + 1] = vl
+    xh, xl = _dd_div(wk[0, 0], wk[0, 1], wk[0, 4], wk[0, 5])
+    yh, yl = _dd_div(wk[0, 2], wk[0, 3], wk[0, 4], wk[0, 5])
+    return xh, xl, yh, yl
+
+
+@njit(cache=True)
+def _polish_dd(HA, HB, t, u, wa, wb, da, db, steps):  # type: ignore[no-untyped-def]
+    """A few Newton steps on ``a(t) - b(u)`` with a double-double residual."""
+    bt = t
+    bu = u
+    bres = math.inf
+    for _ in range(steps):
+        axh, axl, ayh, ayl = _eval_dd(HA, t, da)
+        bxh, bxl, byh, byl = _eval_dd(HB, u, db)
+        fx, fxl = _dd_add(axh, axl, -bxh, -bxl)
+        fy, fyl = _dd_add(ayh, ayl, -byh, -byl)
+        res = math.hypot(fx, fy)
+        if res >= bres:
+            break
+        bres = res
+        bt = t
+        bu = u
+        if res == 0.0:
+            break
+        _ax, _ay, adx, ady, _a2, _a3 = _eval(HA, t, wa)
+        _bx, _by, bdx, bdy, _b2, _b3 = _eval(HB, u, wb)
+        det = -adx * bdy + ady * bdx
+        if det == 0.0:
+            break
+        dt = (-fx * (-bdy) + bdx * (-fy)) / det
+        du = (adx * (-fy) - ady * (-fx)) / det
+        nt = min(1.0, max(0.0, t + dt))
+        nu = min(1.0, max(0.0, u + du))
+        if nt == t and nu == u:
+            break
+        t = nt
+        u = nu
+    return bt, bu
 
 
 # --------------------------------------------------------------------------- pair solve
@@ -719,30 +861,53 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
     if not tl > 0.0:
         tl = 1e-300
     inv = 1.0 / scale
-    wa = np.empty((ma, 3))
-    wb = np.empty((mb, 3))
+    # one allocation per column count for all scratch arrays (leading-axis slices stay C-contiguous)
+    b3 = np.empty((3 * ma + 3 * mb, 3))
+    b2 = np.empty((2 * ma + 2 * mb, 2))
+    b1 = np.empty(3 * ma + 3 * mb)
+    wa = b3[0:ma]
+    wb = b3[ma:ma + mb]
     rnd = _ROUND * max(1.0, 1.0)  # frame is normalised to |x| < 1
 
     # ---------------------------------------------------------------- end points
     # candidates (t, u, dist) from each end point's projection on the other curve;
     # an end point outside the other curve's two fat lines (widened by tol) is skipped
-    CA = np.empty((ma, 2))
-    CB = np.empty((mb, 2))
-    VA = np.empty(ma)
-    VB = np.empty(mb)
+    CA = b2[0:ma]
+    CB = b2[ma:ma + mb]
+    VA = b1[0:ma]
+    VB = b1[ma:ma + mb]
     _cartesian(HA, CA, VA)
     _cartesian(HB, CB, VB)
-    SA = np.empty((ma, 3))
-    SB = np.empty((mb, 3))
-    ea = np.empty(ma)
-    eb = np.empty(mb)
-    CPA = np.empty((ma, 2))
-    CPB = np.empty((mb, 2))
-    VPA = np.empty(ma)
-    VPB = np.empty(mb)
+    SA = b3[ma + mb:2 * ma + mb]
+    SB = b3[2 * ma + mb:2 * ma + 2 * mb]
+    ea = b1[ma + mb:2 * ma + mb]
+    eb = b1[2 * ma + mb:2 * ma + 2 * mb]
+    CPA = b2[ma + mb:2 * ma + mb]
+    CPB = b2[2 * ma + mb:2 * ma + 2 * mb]
+    VPA = b1[2 * ma + 2 * mb:3 * ma + 2 * mb]
+    VPB = b1[3 * ma + 2 * mb:3 * ma + 3 * mb]
     ends = np.empty((8, 3))
     nend = 0
+    # cheap rejection: an end point farther than tol outside the other curve's two fat lines
+    fa0 = fat_line_kernel(CA, False)
+    fa1 = fat_line_kernel(CA, True)
+    fb0 = fat_line_kernel(CB, False)
+    fb1 = fat_line_kernel(CB, True)
     for which in range(4):
+        if which < 2:
+            qx = CA[na * which, 0]
+            qy = CA[na * which, 1]
+            d0 = fb0[0] * qx + fb0[1] * qy + fb0[2]
+            d1 = fb1[0] * qx + fb1[1] * qy + fb1[2]
+            if d0 < fb0[3] - tl or d0 > fb0[4] + tl or d1 < fb1[3] - tl or d1 > fb1[4] + tl:
+                continue
+        else:
+            qx = CB[nb * (which - 2), 0]
+            qy = CB[nb * (which - 2), 1]
+            d0 = fa0[0] * qx + fa0[1] * qy + fa0[2]
+            d1 = fa1[0] * qx + fa1[1] * qy + fa1[2]
+            if d0 < fa0[3] - tl or d0 > fa0[4] + tl or d1 < fa1[3] - tl or d1 > fa1[4] + tl:
+                continue
         if which < 2:
             te = float(which)
             px = CA[na * which, 0]
@@ -834,6 +999,8 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
         t1 = stack[nstack, 1]
         u0 = stack[nstack, 2]
         u1 = stack[nstack, 3]
+        fresh = False
+        axl = axh = ayl = ayh = bxl = bxh = byl = byh = 0.0
         while True:
             iters += 1
             if iters > budget:
@@ -846,10 +1013,12 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
                 break
             if nov > 0 and _in_overlap(ov, nov, t0, t1, u0, u1, margin):
                 break
-            _segment(HA, t0, t1, SA)
-            _segment(HB, u0, u1, SB)
-            axl, axh, ayl, ayh = _cartesian(SA, CA, VA)
-            bxl, bxh, byl, byh = _cartesian(SB, CB, VB)
+            if not fresh:
+                _segment(HA, t0, t1, SA)
+                _segment(HB, u0, u1, SB)
+                axl, axh, ayl, ayh = _cartesian(SA, CA, VA)
+                bxl, bxh, byl, byh = _cartesian(SB, CB, VB)
+            fresh = False
             if axl > bxh + tl or bxl > axh + tl or ayl > byh + tl or byl > ayh + tl:
                 break
             exa = math.hypot(axh - axl, ayh - ayl)
@@ -883,7 +1052,7 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
                     u0 = nu0
                     u1 = max(nu0, nu1)
                     _segment(HB, u0, u1, SB)
-                    _cartesian(SB, CB, VB)
+                    bxl, bxh, byl, byh = _cartesian(SB, CB, VB)
                 # clip a against b's fat line
                 nx, ny, c, dmin, dmax = fat_line_kernel(CB, perp)
                 if not perp:
@@ -899,12 +1068,13 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
                     t0 = nt0
                     t1 = max(nt0, nt1)
                     _segment(HA, t0, t1, SA)
-                    _cartesian(SA, CA, VA)
+                    axl, axh, ayl, ayh = _cartesian(SA, CA, VA)
                 if (t1 - t0) <= _SPLIT_RATIO * wt or (u1 - u0) <= _SPLIT_RATIO * wu:
                     break
             if empty:
                 break
             if (t1 - t0) <= _SPLIT_RATIO * wt or (u1 - u0) <= _SPLIT_RATIO * wu:
+                fresh = True
                 continue
             # stalled: a flat band contact, or split the larger sub-curve
             if wida <= tl and widb <= tl:
@@ -972,6 +1142,8 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
         pts[npts, 4] = 2.0  # end points win merges
         npts += 1
     roots = np.empty((ncand + 4, 3))
+    da = np.empty((ma, 6))
+    db = np.empty((mb, 6))
     for root_label in range(ncand):
         if label[root_label] != root_label:
             continue
@@ -1007,6 +1179,12 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
                 bt = t
                 bu = u
             if r <= rnd:
+                # ill-conditioned root (high degree, near-tangent): double-double polish
+                _x, _y, adx, ady, _a2, _a3 = _eval(HA, t, wa)
+                _x, _y, bdx, bdy, _b2, _b3 = _eval(HB, u, wb)
+                sig = abs(adx * bdy - ady * bdx) / max(math.hypot(adx, ady), math.hypot(bdx, bdy), 1e-300)
+                if (na + nb) * _EPS > 1e-14 * sig:
+                    t, u = _polish_dd(HA, HB, t, u, wa, wb, da, db, 4)
                 dup = False
                 for k in range(nroots):
                     if abs(roots[k, 0] - t) <= 1e-11 and abs(roots[k, 1] - u) <= 1e-11:
@@ -1117,8 +1295,7 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
                     tm = pts[i, 0] + f * (pts[j, 0] - pts[i, 0])
                     um = pts[i, 1] + f * (pts[j, 1] - pts[i, 1])
                     x, y, _a, _b, _c, _d = _eval(HA, tm, wa)
-                    x2, y2, _a, _b, _c, _d = _eval(HB, um, wb)
-                    if math.hypot(x - x2, y - y2) > tl:
+                    if _local_dist(HB, x, y, um, wb) > tl:
                         same = False
                         break
             else:
