@@ -38,7 +38,7 @@ from typing import Any, Literal
 
 import numpy as np
 
-from ..errors import InvalidInputError
+from ..errors import InvalidInputError, ShapeError
 from .occt import default_occt_tolerance, occt_intersections, unique_edges
 from .results import EdgeIntersection, EdgeOverlap, EdgeResult
 
@@ -176,7 +176,7 @@ class ExactCurve:
         if isinstance(curve, Geom_BSplineCurve):
             bs = curve
             if bs.IsPeriodic():
-                bs = Geom_BSplineCurve.DownCast(bs.Copy())
+                bs = bs.Copy()  # OCP hands back the most derived type
                 bs.SetNotPeriodic()
             p = bs.Degree()
             knots = [f(bs.Knot(i)) for i in range(1, bs.NbKnots() + 1)]
@@ -297,11 +297,14 @@ class OverlapCheck:
         The largest sampled distance from ``a`` to ``b`` over the range.
     points : tuple of PointCheck
         The isolated true points found in the range (for the non-overlap statuses).
+    min_distance : float
+        The smallest sampled distance (set for ``"none"``).
     """
 
     status: str
     max_distance: float
     points: tuple[PointCheck, ...] = ()
+    min_distance: float = 0.0
 
     @property
     def holds(self) -> bool:
@@ -445,7 +448,7 @@ def _closest_u(ca: ExactCurve, cb: ExactCurve, t: Any, u0: Any) -> tuple[Any, An
             break
         du = sum(r[k] * db[k] for k in range(3)) / den
         nu = cb.clamp(u + du)
-        if abs(nu - u) <= (abs(u) + 1) * mp.mpf(10) ** (-(mp.dps - 5)):
+        if abs(nu - u) <= (abs(u) + 1) * mp.mpf(10) ** (-(mp.dps // 2)):
             u = nu
             break
         u = nu
@@ -521,10 +524,15 @@ def arbitrate_overlap(
             return OverlapCheck("coincident", dmax)
         # isolated minima in the range
         found: list[PointCheck] = []
-        for i in range(samples):
-            left = dists[i - 1] if i > 0 else mp.inf
-            right = dists[i + 1] if i < samples - 1 else mp.inf
-            if dists[i] <= left and dists[i] <= right:
+        minima = [
+            i
+            for i in range(samples)
+            if dists[i] <= (dists[i - 1] if i > 0 else mp.inf)
+            and dists[i] <= (dists[i + 1] if i < samples - 1 else mp.inf)
+        ]
+        # the deepest few (a flat, noisy distance profile has many shallow ones)
+        for i in sorted(minima, key=lambda j: dists[j])[:6]:
+            if True:
                 rt, ru, dist = _refine(ca, cb, ts[i], us[i])
                 check = _point_check(ca, cb, rt, ru, dist, tol)
                 if check.holds and not any(abs(check.t - f.t) <= 1e-9 * (1 + abs(f.t)) for f in found):
@@ -535,7 +543,7 @@ def arbitrate_overlap(
                 return OverlapCheck("tangent", dmax, tuple(found))
             return OverlapCheck("within_tolerance", dmax)
         if not found:
-            return OverlapCheck("none", dmax)
+            return OverlapCheck("none", dmax, (), float(min(dists)))
         return OverlapCheck(found[0].kind, dmax, tuple(found))
 
 
@@ -1001,6 +1009,22 @@ def _in_range(x: float, rng: tuple[float, float], pad: float) -> bool:
     return lo - pad <= x <= hi + pad
 
 
+def _merge_overlaps(results: list[EdgeResult], pad: float) -> list[EdgeResult]:
+    """Join one side's overlaps whose ``t`` ranges meet (OCCT sometimes fragments one overlap)."""
+    import dataclasses
+
+    ovs = sorted((r for r in results if isinstance(r, EdgeOverlap)), key=lambda r: r.t[0])
+    merged: list[EdgeOverlap] = []
+    for o in ovs:
+        if merged and o.t[0] <= merged[-1].t[1] + pad:
+            last = merged[-1]
+            if o.t[1] > last.t[1]:
+                merged[-1] = dataclasses.replace(last, t=(last.t[0], o.t[1]), u=(last.u[0], o.u[1]))
+            continue
+        merged.append(o)
+    return [r for r in results if isinstance(r, EdgeIntersection)] + list(merged)
+
+
 def _match_side(
     relief: list[EdgeResult],
     occt: list[EdgeResult],
@@ -1016,8 +1040,8 @@ def _match_side(
     for ia, ib in pairs:
         ca, cb = exacts_a[ia], exacts_b[ib]
         pad_a = 1e-9 * (ca.last - ca.first) + 1e-12
-        rel = [r for r in relief if (r.index_a, r.index_b) == (ia, ib)]
-        occ = [r for r in occt if (r.index_a, r.index_b) == (ia, ib)]
+        rel = _merge_overlaps([r for r in relief if (r.index_a, r.index_b) == (ia, ib)], pad_a)
+        occ = _merge_overlaps([r for r in occt if (r.index_a, r.index_b) == (ia, ib)], pad_a)
         used_r: set[int] = set()
         used_o: set[int] = set()
         # 1. overlaps whose t-ranges meet
@@ -1025,9 +1049,14 @@ def _match_side(
             if not isinstance(r, EdgeOverlap):
                 continue
             for j, o in enumerate(occ):
-                if j in used_o or not isinstance(o, EdgeOverlap):
+                if not isinstance(o, EdgeOverlap):
                     continue
                 if min(r.t[1], o.t[1]) >= max(r.t[0], o.t[0]) - pad_a:
+                    if i in used_r or j in used_o:
+                        # a fragment of an overlap already matched (one side split it)
+                        used_r.add(i)
+                        used_o.add(j)
+                        continue
                     dt = max(abs(r.t[0] - o.t[0]), abs(r.t[1] - o.t[1]))
                     du = max(abs(r.u[0] - o.u[0]), abs(r.u[1] - o.u[1]))
                     pa = [float(x) for x in ca.value(r.t[0])], [float(x) for x in ca.value(r.t[1])]
@@ -1036,7 +1065,6 @@ def _match_side(
                     agreed.append(Match(r, o, dist, dt, du))
                     used_r.add(i)
                     used_o.add(j)
-                    break
         # 2. points within tol
         cand = []
         for i, r in enumerate(rel):
@@ -1234,7 +1262,10 @@ def _judge_overlap(
     if chk.status == "tangent":
         what = f"a tangent point, not an overlap (distance rises to {chk.max_distance:.3g} along the range)"
     elif chk.status == "none":
-        what = f"nothing: the curves are {chk.max_distance:.3g} apart at most along the range"
+        what = (
+            f"nothing: the curves never come within tol along the range (closest sampled approach "
+            f"{chk.min_distance:.3g}, farthest {chk.max_distance:.3g})"
+        )
     else:
         what = (
             f"{len(truth_pts)} isolated point(s), not an overlap (max distance {chk.max_distance:.3g} > tol)"
@@ -1298,6 +1329,12 @@ def compare(
     -------
     Comparison
 
+    Raises
+    ------
+    ShapeError
+        A shape without edges (errors of either side on usable shapes are recorded in
+        :attr:`Comparison.errors` instead).
+
     Examples
     --------
     >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
@@ -1312,6 +1349,10 @@ def compare(
 
     edges_a = unique_edges(a)
     edges_b = edges_a if b is None else unique_edges(b)
+    for name, shape, edges in (("a", a, edges_a), ("b", b, edges_b)):
+        if not edges:
+            kind = type(shape).__name__
+            raise ShapeError(f"expected a shape with edges for {name}, received a {kind} with no edges")
     if tol is None:
         tol = default_occt_tolerance(*edges_a, *edges_b)
     errors: dict[str, str] = {}

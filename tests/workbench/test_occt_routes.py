@@ -101,8 +101,8 @@ def test_self_intersection_of_a_looping_cubic_and_of_a_wire():
 def test_bad_input_is_named():
     with pytest.raises(InputTypeError, match="expected a TopoDS_Shape"):
         occt_intersections("edge", None)
-    from OCP.TopoDS import TopoDS_Compound
     from OCP.BRep import BRep_Builder
+    from OCP.TopoDS import TopoDS_Compound
 
     empty = TopoDS_Compound()
     BRep_Builder().MakeCompound(empty)

@@ -1,0 +1,143 @@
+"""The workbench command line end to end: corpus -> compare (parallel, resumed, Dask) -> report -> Chromium."""
+
+from __future__ import annotations
+
+import gzip
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from workbench.corpus import Item, bundled_corpus_path, read_corpus
+from workbench.run import load_results, run_compare
+
+ROOT = Path(__file__).resolve().parents[2]
+CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+
+
+def cli(*args, check=True):
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    proc = subprocess.run([sys.executable, "-m", "workbench", *map(str, args)], capture_output=True, text=True,
+                          env=env, timeout=300)
+    if check and proc.returncode != 0:
+        raise AssertionError(f"exit {proc.returncode}\nstdout:\n{proc.stdout}\nstderr:\n{proc.stderr}")
+    return proc
+
+
+@pytest.fixture(scope="module")
+def corpus(tmp_path_factory):
+    """A small corpus built by the CLI, with a broken STEP file named, plus bad lines appended."""
+    d = tmp_path_factory.mktemp("wb")
+    broken = d / "broken.step"
+    broken.write_text("ISO-10303-21;\nHEADER;\nthis is not STEP")
+    path = d / "small.jsonl"
+    proc = cli("corpus", path, "--families", "cubic,tangent,overlap,step", "--count", "2", "--seed", "3",
+               "--step", ROOT / "workbench" / "data" / "step", "--step", broken)
+    assert "broken STEP file" in proc.stderr and "wrote 8 items" in proc.stdout
+    items = [i for i in read_corpus(path) if isinstance(i, Item)]
+    assert [i.family for i in items].count("step") == 2
+    # bad input: a corrupt line, and an item whose shape has no edges
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeVertex
+    from OCP.gp import gp_Pnt
+
+    from workbench.corpus import brep_text
+
+    vertex = brep_text(BRepBuilderAPI_MakeVertex(gp_Pnt(0, 0, 0)).Vertex())
+    with open(path, "a") as f:
+        f.write('{"id": "broken", "a": \n')
+        f.write(json.dumps({"id": "no-edges", "family": "bad", "a": vertex, "b": vertex}) + "\n")
+    return path
+
+
+def test_compare_resume_and_report_end_to_end(corpus, tmp_path):
+    out = tmp_path / "run"
+    # an interrupted run: stops after 3 results (exit status 3: incomplete)
+    proc = cli("compare", corpus, "--out", out, "--workers", "1", "--stop-after", "3", check=False)
+    assert proc.returncode == 3 and "INTERRUPTED" in proc.stdout
+    first = load_results(out / "results.jsonl")
+    assert len(first) >= 3
+    # a crash in the middle of a line: the half line is dropped on resume
+    with open(out / "results.jsonl", "a") as f:
+        f.write('{"id": "half-writ')
+    proc = cli("compare", corpus, "--out", out, "--workers", "2")
+    assert "compare [" in proc.stderr and "pairs/s" in proc.stderr and "ETA" in proc.stderr
+    assert "complete:" in proc.stdout and "TOTAL" in proc.stdout
+    recs = load_results(out / "results.jsonl")
+    ids = [r["id"] for r in recs]
+    assert len(ids) == len(set(ids)) == 10  # 8 items + corrupt line + no-edge item, each once
+    assert {r["id"] for r in first} <= set(ids)  # nothing computed was lost
+    bad = {r["id"]: r for r in recs if r["status"] == "error"}
+    assert "corrupt corpus line" in bad["small.jsonl:line-9"]["reason"]
+    assert "no edges" in bad["no-edges"]["reason"]
+    ok = [r for r in recs if r["status"] == "ok"]
+    assert len(ok) == 8 and all("score" in r and r["routes"] is not None for r in ok)
+    overlaps = [r for r in ok if r["family"] == "overlap"]
+    assert any(m["occt"]["type"] == "overlap" for r in overlaps for m in r["agreed"]) or any(
+        d["claim"]["type"] == "overlap" for r in overlaps for d in r["disagreements"]
+    )
+    proc = cli("report", out)
+    report = out / "report.html"
+    assert report.exists() and "report written to" in proc.stdout
+    text = report.read_text()
+    assert "Summary by family" in text and "Summary by OCCT route" in text
+    assert text.count("data:image/png;base64,") >= 2
+    assert "no-edges" in text and "corrupt corpus line" in text
+    assert "http://" not in text and "https://" not in text  # self-contained, offline
+    if CHROMIUM is None:
+        pytest.skip("chromium is not installed (apt-get install chromium)")
+    dom = subprocess.run(
+        [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+         "--disable-background-networking", "--disable-component-update", "--disable-sync",
+         f"--user-data-dir={tmp_path / 'chromium'}", "--dump-dom", report.as_uri()],
+        capture_output=True, text=True, timeout=120,
+    ).stdout
+    import re
+
+    body = re.search(r"<body([^>]*)>", dom)
+    assert body is not None, dom[:500]
+    n_img = int(re.search(r'data-images="(\d+)"', body.group(1)).group(1))
+    n_ok = int(re.search(r'data-images-ok="(\d+)"', body.group(1)).group(1))
+    assert n_img >= 2 and n_ok == n_img  # every inline picture decoded and rendered
+    assert dom.count("<table") >= 3 and "cubic" in dom
+    shot = tmp_path / "shot.png"
+    subprocess.run(
+        [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+         "--disable-background-networking", "--disable-component-update", "--disable-sync",
+         f"--user-data-dir={tmp_path / 'chromium'}", "--window-size=1000,1400", f"--screenshot={shot}",
+         report.as_uri()],
+        capture_output=True, timeout=120,
+    )
+    assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 20_000
+
+
+def test_compare_on_a_local_dask_cluster(corpus, tmp_path):
+    distributed = pytest.importorskip("distributed")
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False,
+                                  dashboard_address=None) as cluster, distributed.Client(cluster) as client:
+        summary = run_compare(corpus, tmp_path / "dask", scheduler=client, progress=False, limit=6)
+    assert summary["complete"]
+    recs = load_results(tmp_path / "dask" / "results.jsonl")
+    assert len(recs) == 6 and {r["status"] for r in recs} == {"ok"}
+    assert summary["total"]["pairs"] == 6
+
+
+def test_bundled_corpus_is_small_and_readable():
+    path = bundled_corpus_path()
+    assert path.exists() and path.stat().st_size < 400_000
+    with gzip.open(path, "rt") as f:
+        lines = f.readlines()
+    fams = {json.loads(line)["family"] for line in lines}
+    assert {"cubic", "ill-conditioned", "tangent", "overlap", "glyph", "sketch", "step"} <= fams
+
+
+def test_bench_reports_a_missing_module(tmp_path, monkeypatch):
+    from workbench import bench
+
+    monkeypatch.setitem(bench.BENCHMARKS, "nothing", "workbench.bench_does_not_exist")
+    res = bench.run_bench(["nothing"], tmp_path / "b.json")
+    assert res["nothing"]["status"] == "missing" and "bench_does_not_exist" in res["nothing"]["reason"]
+    assert json.loads((tmp_path / "b.json").read_text())["nothing"]["status"] == "missing"
