@@ -20,13 +20,14 @@ __all__ = ["main"]
 
 
 def _cmd_corpus(args: argparse.Namespace) -> int:
-    from .corpus import RANDOM_FAMILIES, CorpusError, build_corpus, write_corpus
+    from .corpus import RANDOM_FAMILIES, CorpusError, build_corpus, bundled_items, write_corpus
 
     fams = args.families.split(",") if args.families else list(RANDOM_FAMILIES) + ["glyph", "sketch", "step"]
     problems: list[str] = []
+    source = bundled_items() if args.bundled else build_corpus(fams, args.count, args.seed, args.step or ())
 
     def items():  # type: ignore[no-untyped-def]
-        for it in build_corpus(fams, args.count, args.seed, args.step or ()):
+        for it in source:
             if isinstance(it, CorpusError):
                 problems.append(str(it))
                 print(f"skipped: {it}", file=sys.stderr)
@@ -122,6 +123,12 @@ def build_parser() -> argparse.ArgumentParser:
         "--step",
         action="append",
         help="a STEP file or folder for the 'step' family (repeatable; default: the bundled parts)",
+    )
+    c.add_argument(
+        "--bundled",
+        action="store_true",
+        help="write the bundled corpus's recipe (ignores the "
+        "other options; this is how workbench/data/bundled.jsonl.gz is made)",
     )
     c.set_defaults(func=_cmd_corpus)
 

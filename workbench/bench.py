@@ -1,7 +1,8 @@
 """``bench``: run the benchmarks the other modules define and print/write their tables.
 
 Each benchmark lives in its own module with a ``run()`` function returning a list of row
-dicts (or a dict with a ``"rows"`` list): ``workbench.bench_planar`` (planar intersector),
+dicts, or a dict whose list-of-dict values are tables (``"rows"``, ``"cases"``...) and
+whose other values are single figures: ``workbench.bench_planar`` (planar intersector),
 ``workbench.bench_cad`` (CAD adapters), ``workbench.bench_space`` (space intersector).
 Rows are printed as a table (µs per pair and ratios against OCCT, as the module reports
 them) and written as JSON. A module that is missing or fails is reported, and the other
@@ -17,7 +18,7 @@ import traceback
 from pathlib import Path
 from typing import Any
 
-__all__ = ["BENCHMARKS", "run_bench", "format_rows"]
+__all__ = ["BENCHMARKS", "run_bench", "format_rows", "format_result"]
 
 BENCHMARKS = {
     "planar": "workbench.bench_planar",
@@ -46,6 +47,27 @@ def format_rows(rows: list[dict[str, Any]]) -> str:
     out = ["  ".join(c.ljust(w) for c, w in zip(cols, widths, strict=True))]
     out.append("  ".join("-" * w for w in widths))
     out += ["  ".join(v.rjust(w) for v, w in zip(row, widths, strict=True)) for row in cells]
+    return "\n".join(out)
+
+
+def format_result(res: Any) -> str:
+    """A benchmark's result as text: every list of row dicts as a table, scalars as lines."""
+    if isinstance(res, list):
+        return format_rows([r if isinstance(r, dict) else {"value": r} for r in res])
+    if not isinstance(res, dict):
+        return str(res)
+    out = []
+    for key, val in res.items():
+        if isinstance(val, list) and val and all(isinstance(r, dict) for r in val):
+            out.append(f"-- {key}")
+            out.append(format_rows(val))
+        elif isinstance(val, dict):
+            out.append(
+                f"-- {key}: "
+                + ", ".join(f"{k}={v:.4g}" if isinstance(v, float) else f"{k}={v}" for k, v in val.items())
+            )
+        else:
+            out.append(f"{key}: {val:.4g}" if isinstance(val, float) else f"{key}: {val}")
     return "\n".join(out)
 
 
@@ -80,16 +102,13 @@ def run_bench(names: list[str], out: str | Path | None = None, **kwargs: Any) ->
             }
             print(f"== bench {name}: FAILED: {type(exc).__name__}: {exc}")
             continue
-        rows = res.get("rows", res) if isinstance(res, dict) else res
-        if not isinstance(rows, list):
-            rows = [{"result": str(rows)}]
         results[name] = {
             "status": "ok",
             "seconds": time.perf_counter() - t0,
             "result": res if isinstance(res, (dict, list)) else str(res),
         }
         print(f"== bench {name} ({time.perf_counter() - t0:.1f} s)")
-        print(format_rows([r if isinstance(r, dict) else {"value": r} for r in rows]))
+        print(format_result(res))
     if out is not None:
         p = Path(out)
         p.parent.mkdir(parents=True, exist_ok=True)

@@ -59,6 +59,7 @@ __all__ = [
     "sketch_family",
     "step_family",
     "build_corpus",
+    "bundled_items",
     "pair_text",
     "PAIR_MARK",
 ]
@@ -588,6 +589,17 @@ def step_family(paths: Iterable[str | os.PathLike[str]], count: int) -> Iterator
             yield Item(f"step-{f.stem}-{got:06d}", "step", pair_text(a, b), PAIR_MARK, None, {"file": f.name})
             got += 1
             k += 1
+
+
+BUNDLED_RECIPE = {"random_count": 8, "cad_count": 14, "seed": 7}
+"""How ``workbench/data/bundled.jsonl.gz`` is made (``python -m workbench corpus --bundled OUT``)."""
+
+
+def bundled_items() -> Iterator[Item | CorpusError]:
+    """The bundled corpus: 8 of each random family and 14 each of glyph, sketch and STEP pairs (seed 7)."""
+    r = BUNDLED_RECIPE
+    yield from build_corpus(RANDOM_FAMILIES, r["random_count"], r["seed"])
+    yield from build_corpus(CAD_FAMILIES, r["cad_count"], r["seed"])
 
 
 def build_corpus(
