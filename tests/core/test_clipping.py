@@ -1,0 +1,87 @@
+"""Hazmat clipping functions: fat lines, distance coefficients, hull ranges, clip ranges."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from relief_cad.clipping import clip_range, compute_fat_line, distance_coefficients, hull_range
+from relief_cad.curves import RationalBezier
+from relief_cad.errors import ShapeError
+
+
+def _dist(line: tuple[float, float, float, float, float], pts: np.ndarray) -> np.ndarray:
+    nx, ny, c, _lo, _hi = line
+    return pts @ np.array([nx, ny]) + c
+
+
+@pytest.mark.parametrize("seed", range(8))
+@pytest.mark.parametrize("perpendicular", [False, True])
+def test_fat_line_contains_the_curve(seed: int, perpendicular: bool) -> None:
+    rng = np.random.default_rng(seed)
+    n = 1 + seed % 5
+    curve = RationalBezier(rng.normal(size=(n + 1, 2)), rng.uniform(0.1, 5.0, n + 1))
+    line = compute_fat_line(curve.control_points, perpendicular=perpendicular)
+    assert line[0] ** 2 + line[1] ** 2 == pytest.approx(1.0)
+    d = _dist(line, curve.evaluate(np.linspace(0, 1, 201)))
+    assert d.min() >= line[3] - 1e-12 and d.max() <= line[4] + 1e-12
+
+
+@pytest.mark.parametrize("nodes", [
+    [[1.0, 1.0], [1.0, 1.0], [1.0, 1.0]],              # point-like
+    [[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [0.0, 0.0]],  # closed
+    [[0.0, 0.0], [0.0, 0.0], [3.0, 1.0]],              # repeated start
+])
+def test_degenerate_fat_lines_are_defined(nodes: list[list[float]]) -> None:
+    pts = np.array(nodes)
+    line = compute_fat_line(pts)
+    assert all(np.isfinite(line))
+    d = _dist(line, pts)
+    assert d.min() >= line[3] - 1e-15 and d.max() <= line[4] + 1e-15
+
+
+def test_distance_coefficients_by_hand() -> None:
+    lower, upper = distance_coefficients(np.array([[0.0, 3.0], [1.0, -1.0], [2.0, 3.0]]),
+                                         np.array([1.0, 2.0, 1.0]), (0.0, 1.0, 0.0, 0.0, 1.0), tol=0.5)
+    assert lower.tolist() == [3.5, -1.0, 3.5]
+    assert upper.tolist() == [-1.5, 5.0, -1.5]
+
+
+@pytest.mark.parametrize("coeffs,expected", [
+    ([-1.0, 1.0], (0.5, 1.0)),
+    ([1.0, -1.0], (0.0, 0.5)),
+    ([-1.0, 3.0, -1.0], (0.125, 0.875)),
+    ([2.0, 2.0], (0.0, 1.0)),
+])
+def test_hull_range_by_hand(coeffs: list[float], expected: tuple[float, float]) -> None:
+    assert hull_range(np.array(coeffs)) == pytest.approx(expected)
+
+
+def test_hull_range_empty() -> None:
+    lo, hi = hull_range(np.array([-1.0, -0.5, -2.0]))
+    assert lo > hi
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_clip_range_keeps_every_point_inside_the_strip(seed: int) -> None:
+    rng = np.random.default_rng(100 + seed)
+    a = RationalBezier(rng.random((4, 2)))
+    b = RationalBezier(rng.random((4, 2)), rng.uniform(0.2, 3.0, 4))
+    line = compute_fat_line(a.control_points)
+    lo, hi = clip_range(b.control_points, b.weights, line, tol=1e-3)
+    s = np.linspace(0, 1, 2001)
+    d = _dist(line, b.evaluate(s))
+    inside = s[(d >= line[3] - 1e-3) & (d <= line[4] + 1e-3)]
+    if lo > hi:
+        assert inside.size == 0
+    else:
+        assert inside.size == 0 or (inside.min() >= lo - 1e-12 and inside.max() <= hi + 1e-12)
+
+
+def test_shape_errors() -> None:
+    with pytest.raises(ShapeError):
+        compute_fat_line(np.zeros((3, 3)))
+    with pytest.raises(ShapeError):
+        hull_range(np.zeros(1))
+    with pytest.raises(ShapeError):
+        clip_range(np.zeros((3, 2)), np.ones(2), (0.0, 1.0, 0.0, 0.0, 1.0))

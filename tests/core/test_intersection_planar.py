@@ -1,0 +1,268 @@
+"""Planar intersection API: validation, results, self-intersections, lines, batches, budgets.
+
+Expected values come from closed forms or sympy, never from relief_cad itself.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+import sympy as sp
+
+from relief_cad.curves import RationalBezier
+from relief_cad.errors import (
+    BudgetExceededError,
+    InputTypeError,
+    InvalidInputError,
+    ReliefCadError,
+    ShapeError,
+    ToleranceError,
+)
+from relief_cad.intersection import _intersect_planar, intersect, intersect_line, intersect_many
+from relief_cad.results import Intersection, IntersectionList, Overlap
+
+PARABOLA = RationalBezier([[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]])  # y = 4 t (1 - t), x = 2 t
+LOOP = RationalBezier([[0.0, 0.0], [5.0, 4.0], [-1.0, 4.0], [4.0, 0.0]])
+
+
+def _line(p: tuple[float, float], q: tuple[float, float]) -> RationalBezier:
+    return RationalBezier([p, q])
+
+
+# ----------------------------------------------------------------------------- validation
+
+
+@pytest.mark.parametrize("bad", [None, 3, "curve", np.zeros((3, 2))])
+def test_non_curve_raises_input_type_error(bad: object) -> None:
+    with pytest.raises(InputTypeError):
+        intersect(bad, PARABOLA)  # type: ignore[arg-type]
+    if bad is not None:
+        with pytest.raises(TypeError):
+            intersect(PARABOLA, bad)  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize("tol", [0.0, -1e-9, math.nan, math.inf, "1e-9", True])
+def test_bad_tolerance_raises(tol: object) -> None:
+    with pytest.raises(ToleranceError):
+        intersect(PARABOLA, _line((0, 1), (2, 1)), tol=tol)  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize("budget", [0, -5])
+def test_bad_budget_raises(budget: int) -> None:
+    with pytest.raises(InvalidInputError):
+        intersect(PARABOLA, _line((0, 1), (2, 1)), budget=budget)
+
+
+def test_bad_on_budget_raises() -> None:
+    with pytest.raises(InvalidInputError):
+        intersect(PARABOLA, PARABOLA, on_budget="ignore")  # type: ignore[arg-type]
+
+
+# ----------------------------------------------------------------------------- closed forms
+
+
+@pytest.mark.parametrize("height", [0.25, 0.5, 0.75, 0.999])
+def test_parabola_against_horizontal_line(height: float) -> None:
+    # 4 t (1 - t) = h  ->  t = (1 +- sqrt(1 - h)) / 2 ; the line x = 2 u so u = t
+    r = intersect(PARABOLA, _line((0.0, height), (2.0, height)))
+    s = math.sqrt(1.0 - height)
+    expected = [(0.5 - s / 2, 0.5 - s / 2), (0.5 + s / 2, 0.5 + s / 2)]
+    assert [x.kind for x in r] == ["crossing", "crossing"]
+    for got, (t, u) in zip(r, expected):
+        assert isinstance(got, Intersection)
+        assert abs(got.t - t) <= 1e-14 and abs(got.u - u) <= 1e-14
+        np.testing.assert_allclose(got.point, [2 * t, height], atol=1e-14)
+        assert got.distance <= 1e-14
+
+
+def test_results_sorted_and_typed() -> None:
+    r = intersect(_line((0.0, 0.9), (2.0, 0.1)), PARABOLA)
+    assert isinstance(r, IntersectionList) and r.complete
+    assert [x.t for x in r] == sorted(x.t for x in r)
+
+
+def test_tangent_line_is_one_tangent_contact() -> None:
+    r = intersect(PARABOLA, _line((0.0, 1.0), (2.0, 1.0)))
+    assert len(r) == 1 and r[0].kind == "tangent"
+    assert abs(r[0].t - 0.5) <= 1e-7 and abs(r[0].u - 0.5) <= 1e-7
+
+
+@pytest.mark.parametrize("gap,found", [(1e-7, False), (1e-12, True)])
+def test_near_miss_respects_tolerance(gap: float, found: bool) -> None:
+    r = intersect(PARABOLA, _line((0.0, 1.0 + gap), (2.0, 1.0 + gap)), tol=1e-9)
+    assert len(r) == int(found)
+    if found:
+        assert r[0].kind == "tangent" and r[0].distance == pytest.approx(gap, rel=0.01)
+
+
+def test_explicit_tolerance_turns_near_miss_into_contact() -> None:
+    line = _line((0.0, 1.0 + 1e-5), (2.0, 1.0 + 1e-5))
+    assert len(intersect(PARABOLA, line)) == 0
+    r = intersect(PARABOLA, line, tol=1e-4)
+    assert len(r) == 1 and r[0].kind == "tangent" and abs(r[0].t - 0.5) < 1e-6
+
+
+def test_circle_arc_against_line_closed_form() -> None:
+    s2 = math.sqrt(0.5)
+    quarter = RationalBezier([[1.0, 0.0], [1.0, 1.0], [0.0, 1.0]], [1.0, s2, 1.0])
+    r = intersect(quarter, _line((0.0, 0.0), (1.0, 1.0)))
+    assert len(r) == 1 and r[0].kind == "crossing"
+    np.testing.assert_allclose(r[0].point, [s2, s2], atol=1e-15)
+    assert r[0].t == pytest.approx(0.5, abs=1e-15) and r[0].u == pytest.approx(s2, abs=1e-15)
+
+
+def test_end_points_exact_and_once() -> None:
+    a = RationalBezier([[0.0, 0.0], [1.0, 2.0], [2.0, 0.0], [3.0, 1.0]])
+    b = RationalBezier([[3.0, 1.0], [4.0, 0.0], [5.0, 2.0]])
+    r = intersect(a, b)
+    assert [(x.t, x.u) for x in r] == [(1.0, 0.0)]
+    r = intersect(b, a)
+    assert [(x.t, x.u) for x in r] == [(0.0, 1.0)]
+
+
+def test_overlap_with_reversed_direction() -> None:
+    a = RationalBezier([[0.0, 0.0], [1.0, 3.0], [3.0, -1.0], [4.0, 2.0]])
+    b = a.segment(0.75, 0.25)
+    r = intersect(a, b)
+    assert len(r) == 1 and isinstance(r[0], Overlap)
+    assert r[0].t == pytest.approx((0.25, 0.75), abs=1e-12)
+    assert r[0].u == pytest.approx((1.0, 0.0), abs=1e-12)
+    assert r[0].reversed_direction
+
+
+def test_identical_curves_overlap_entirely() -> None:
+    r = intersect(LOOP, LOOP)
+    assert [(o.t, o.u) for o in r.overlaps] == [((0.0, 1.0), (0.0, 1.0))]
+
+
+def test_point_like_curve_on_line_reported_once() -> None:
+    dot = RationalBezier([[1.0, 1.0], [1.0, 1.0], [1.0, 1.0]])
+    r = intersect(dot, _line((0.0, 0.0), (2.0, 2.0)))
+    assert len(r) == 1 and r[0].u == pytest.approx(0.5, abs=1e-12)
+    assert intersect(dot, _line((0.0, 0.0), (2.0, 2.5))) == []
+
+
+# ----------------------------------------------------------------------------- self
+
+
+def _loop_double_point() -> tuple[float, float]:
+    s1, s2 = sp.symbols("s1 s2")
+    t = sp.symbols("t")
+    p = [(sp.Integer(x), sp.Integer(y)) for x, y in LOOP.control_points.astype(int).tolist()]
+    bern = [(1 - t) ** 3, 3 * t * (1 - t) ** 2, 3 * t**2 * (1 - t), t**3]
+    x = sum(b * q[0] for b, q in zip(bern, p))
+    y = sum(b * q[1] for b, q in zip(bern, p))
+    gx = sp.cancel((x.subs(t, s1) - x.subs(t, s2)) / (s1 - s2))
+    gy = sp.cancel((y.subs(t, s1) - y.subs(t, s2)) / (s1 - s2))
+    sol = [s for s in sp.solve([gx, gy], [s1, s2], dict=True) if all(v.is_real for v in s.values())]
+    a, b = sorted(float(sp.N(v, 30)) for v in sol[0].values())
+    return a, b
+
+
+def test_self_intersection_of_a_loop_once() -> None:
+    t, u = _loop_double_point()
+    r = intersect(LOOP)
+    assert len(r) == 1
+    assert r[0].t < r[0].u
+    assert abs(r[0].t - t) <= 1e-13 and abs(r[0].u - u) <= 1e-13
+
+
+@pytest.mark.parametrize("pts", [
+    [[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]],
+    [[0.0, 0.0], [3.0, 3.0], [0.0, 3.0], [3.0, 0.0]],  # a cusp, no double point
+    [[0.0, 0.0], [1.0, 1.0], [2.0, -1.0], [3.0, 0.0]],
+])
+def test_curves_without_double_points(pts: list[list[float]]) -> None:
+    assert intersect(RationalBezier(pts)) == []
+
+
+# ----------------------------------------------------------------------------- lines
+
+
+def test_intersect_line_closed_form() -> None:
+    r = intersect_line(PARABOLA, (0.0, 0.75), (2.0, 0.0))
+    assert [(x.t, x.u) for x in r] == [(0.25, 0.25), (0.75, 0.75)]
+
+
+@pytest.mark.parametrize("n", [5, 9, 14, 20])
+def test_intersect_line_high_degree_graph(n: int) -> None:
+    # graph of y = x^n on [0, 1] (Bernstein: y_i = 1 if i == n else 0) against y = c: x = c^(1/n)
+    xs = np.arange(n + 1) / n
+    ys = np.zeros(n + 1)
+    ys[-1] = 1.0
+    c = 0.3
+    r = intersect_line(RationalBezier(np.column_stack([xs, ys])), (0.0, c), (1.0, 0.0), tol=1e-12)
+    assert len(r) == 1
+    assert abs(r[0].t - c ** (1.0 / n)) <= 1e-13
+
+
+def test_intersect_line_rejects_bad_input() -> None:
+    with pytest.raises(InvalidInputError):
+        intersect_line(PARABOLA, (0, 0), (0, 0))
+    with pytest.raises(ShapeError):
+        intersect_line(PARABOLA, (0, 0, 0), (1, 0))
+
+
+# ----------------------------------------------------------------------------- batch
+
+
+def test_intersect_many_matches_single_calls() -> None:
+    rng = np.random.default_rng(11)
+    pairs = [(RationalBezier(rng.random((4, 2))), RationalBezier(rng.random((3, 2)), rng.random(3) + 0.5))
+             for _ in range(40)]
+    many = intersect_many(pairs)
+    for (a, b), got in zip(pairs, many):
+        single = intersect(a, b)
+        assert [(x.t, x.u, x.kind) for x in got] == [(x.t, x.u, x.kind) for x in single]
+
+
+def test_intersect_many_rejects_non_pairs() -> None:
+    with pytest.raises(InputTypeError):
+        intersect_many([PARABOLA])  # type: ignore[list-item]
+
+
+# ----------------------------------------------------------------------------- budgets
+
+
+def test_budget_exhaustion_raises_with_unresolved_boxes() -> None:
+    a = RationalBezier([[0.0, 0.0], [1.0, 6.0], [2.0, -6.0], [3.0, 0.0]])
+    b = RationalBezier([[0.0, 0.1], [1.0, -6.0], [2.0, 6.0], [3.0, 0.1]])
+    with pytest.raises(BudgetExceededError) as info:
+        intersect(a, b, budget=2)
+    assert isinstance(info.value, ReliefCadError)
+    assert info.value.unresolved
+    partial = intersect(a, b, budget=2, on_budget="return")
+    assert not partial.complete and partial.unresolved
+    assert intersect(a, b).complete
+
+
+def test_internal_planar_contract() -> None:
+    ha = np.array([[0.0, 0.0, 2.0], [4.0, 4.0, 2.0]])  # the line (0,0)-(2,2), weights 2
+    hb = np.array([[0.0, 2.0, 1.0], [2.0, 0.0, 1.0]])
+    r = _intersect_planar(ha, hb, 1e-9)
+    assert [(x.t, x.u) for x in r] == [(0.5, 0.5)]
+    with pytest.raises(ShapeError):
+        _intersect_planar(ha[:, :2], hb, 1e-9)
+
+
+# ----------------------------------------------------------------------------- pure Python path
+
+
+def test_kernels_run_without_jit() -> None:
+    """The kernels are plain Python under NUMBA_DISABLE_JIT=1 (run in a subprocess)."""
+    env = dict(os.environ, NUMBA_DISABLE_JIT="1")
+    here = Path(__file__).resolve()
+    tests = ["test_parabola_against_horizontal_line", "test_end_points_exact_and_once",
+             "test_overlap_with_reversed_direction", "test_tangent_line_is_one_tangent_contact"]
+    out = subprocess.run(
+        [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", str(here), "-k", " or ".join(tests)],
+        env=env, capture_output=True, text=True, timeout=600, check=False,
+    )
+    assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
+    assert "passed" in out.stdout
