@@ -38,11 +38,19 @@ from typing import Any
 import numpy as np
 
 from ..curves import RationalBezier
-from ..errors import InvalidInputError
+from ..errors import AdapterUnavailableError, InvalidInputError
 from ..results import Intersection, Overlap
 from ..tolerances import default_tolerance
 from . import ocp
 from .results import EdgeIntersection, EdgeOverlap, EdgeResult
+
+try:
+    from OCP.BRep import BRep_Tool
+    from OCP.TopExp import TopExp
+except ImportError as exc:  # pragma: no cover - ocp above raises first
+    raise AdapterUnavailableError(
+        'relief_cad.cad needs OCP (cadquery-ocp); install it with: pip install "relief-cad[cad]"'
+    ) from exc
 
 __all__ = ["intersect", "intersections", "segments", "split", "flavour_of"]
 
@@ -142,57 +150,76 @@ class _EdgeInfo:
     approximate: bool
     first: float
     last: float
-    vertices: tuple[Any, Any]  # first / last TopoDS_Vertex (may be null)
     curves2d: list[RationalBezier] | None = None
+    _vertices: tuple[Any, Any] | None = None
+
+    @property
+    def vertices(self) -> tuple[Any, Any]:
+        """First and last ``TopoDS_Vertex`` of the edge (may be null), looked up on demand."""
+        if self._vertices is None:
+            self._vertices = (TopExp.FirstVertex_s(self.edge), TopExp.LastVertex_s(self.edge))
+        return self._vertices
 
 
 def _prepare(shape: Any) -> list[_EdgeInfo]:
-    from OCP.BRep import BRep_Tool
-    from OCP.TopExp import TopExp
-
     infos = []
     for index, edge in enumerate(ocp.edges_of(shape)):
         if BRep_Tool.Degenerated_s(edge):
             continue
         segs = ocp.edge_segments(edge)
-        if len(segs) == 1:
-            pts = segs[0].curve.control_points
-            boxes = np.stack([pts.min(axis=0), pts.max(axis=0)])[None]
-        else:
-            boxes = np.empty((len(segs), 2, 3))
-            for k, s in enumerate(segs):
-                pts = s.curve.control_points
-                boxes[k, 0] = pts.min(axis=0)
-                boxes[k, 1] = pts.max(axis=0)
+        boxes = np.empty((len(segs), 2, 3))
+        for k, s in enumerate(segs):
+            pts = s.control_points
+            boxes[k, 0] = pts.min(axis=0)
+            boxes[k, 1] = pts.max(axis=0)
+        one = len(segs) == 1
         infos.append(
             _EdgeInfo(
                 index=index,
                 edge=edge,
                 segs=segs,
                 boxes=boxes,
-                lo=boxes[0, 0] if len(segs) == 1 else boxes[:, 0].min(axis=0),
-                hi=boxes[0, 1] if len(segs) == 1 else boxes[:, 1].max(axis=0),
-                tolerance=float(BRep_Tool.Tolerance_s(edge)),
-                approximate=any(s.approximate for s in segs),
+                lo=boxes[0, 0] if one else boxes[:, 0].min(axis=0),
+                hi=boxes[0, 1] if one else boxes[:, 1].max(axis=0),
+                tolerance=BRep_Tool.Tolerance_s(edge),
+                approximate=segs[0].approximate,
                 first=segs[0].t0,
                 last=segs[-1].t1,
-                vertices=(TopExp.FirstVertex_s(edge), TopExp.LastVertex_s(edge)),
             )
         )
     return infos
 
 
 def _all_points(infos: list[_EdgeInfo]) -> np.ndarray:
-    return np.vstack([s.curve.control_points for e in infos for s in e.segs])
+    return np.vstack([s.control_points for e in infos for s in e.segs])
+
+
+def _joint_box(infos: list[_EdgeInfo]) -> np.ndarray:
+    """The two corners of the joint bounding box of the edges' control points."""
+    if len(infos) == 1:
+        return np.array([infos[0].lo, infos[0].hi])
+    return np.array([np.min([e.lo for e in infos], axis=0), np.max([e.hi for e in infos], axis=0)])
 
 
 def _default_tol(infos: list[_EdgeInfo]) -> float:
-    pts = _all_points(infos)
-    size = float(np.linalg.norm(pts.max(axis=0) - pts.min(axis=0)))
+    box = _joint_box(infos)
+    size = math.dist(box[0], box[1])
     occt = max(e.tolerance for e in infos)
     if math.isfinite(occt) and 0.0 < occt <= _MEANINGFUL_FRACTION * size:
         return occt
-    return default_tolerance(pts)
+    # the bounding box corners carry the size and the largest coordinate of all control points
+    return default_tolerance(box)
+
+
+def _common_frame(infos: list[_EdgeInfo], tol: float) -> np.ndarray | None:
+    """A 2D frame of a plane holding every control point, or None (XY-parallel checked on boxes)."""
+    box = _joint_box(infos)
+    if box[1, 2] - box[0, 2] <= tol * _PLANE_FRACTION:
+        return _XY_FRAME
+    return ocp.planar_frame(_all_points(infos), tol * _PLANE_FRACTION)
+
+
+_XY_FRAME = np.array([[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0]])
 
 
 def _check_tol(tol: Any) -> float:
@@ -207,8 +234,10 @@ def _check_tol(tol: Any) -> float:
     return value
 
 
-def _to_plane(curve: RationalBezier, frame: np.ndarray) -> RationalBezier:
-    h = curve.homogeneous
+def _to_plane(segment: ocp.Segment, frame: np.ndarray) -> RationalBezier:
+    h = segment.homogeneous
+    if frame is _XY_FRAME:
+        return ocp._make_curve(h[:, (0, 1, 3)])
     h2 = np.empty((h.shape[0], 3))
     h2[:, :2] = h @ frame.T
     h2[:, 2] = h[:, 3]
@@ -217,7 +246,7 @@ def _to_plane(curve: RationalBezier, frame: np.ndarray) -> RationalBezier:
 
 def _set_plane(infos: list[_EdgeInfo], frame: np.ndarray | None) -> None:
     for e in infos:
-        e.curves2d = None if frame is None else [_to_plane(s.curve, frame) for s in e.segs]
+        e.curves2d = None if frame is None else [_to_plane(s, frame) for s in e.segs]
 
 
 # --------------------------------------------------------------------------- the core loop
@@ -261,7 +290,7 @@ def _pair_jobs(ea: _EdgeInfo, eb: _EdgeInfo, same: bool, tol: float, planar: boo
     frame = None
     if not planar:
         frame = ocp.planar_frame(
-            np.vstack([s.curve.control_points for s in (ea.segs + ([] if same else eb.segs))]),
+            np.vstack([s.control_points for s in (ea.segs + ([] if same else eb.segs))]),
             tol * _PLANE_FRACTION,
         )
     jobs: list[_Job] = []
@@ -279,7 +308,7 @@ def _pair_jobs(ea: _EdgeInfo, eb: _EdgeInfo, same: bool, tol: float, planar: boo
                 ca = ea.curves2d[i]  # type: ignore[index]
                 cb = eb.curves2d[j]  # type: ignore[index]
             elif frame is not None:
-                ca, cb = _to_plane(sa.curve, frame), _to_plane(sb.curve, frame)
+                ca, cb = _to_plane(sa, frame), _to_plane(sb, frame)
             else:
                 ca, cb = sa.curve, sb.curve
             jobs.append(_Job(ea, eb, i, j, ca, None if (same and i == j) else cb))
@@ -309,18 +338,18 @@ def _raw_results(job: _Job, found: list[Any]) -> list[_Raw]:
         if isinstance(r, Overlap):
             t = (sa.edge_param(r.t[0]), sa.edge_param(r.t[1]))
             u = (sb.edge_param(r.u[0]), sb.edge_param(r.u[1]))
-            out.append(_Raw(ea, eb, t, u, _point3(sa.curve, r.t[0]), "overlap", 0.0))
+            out.append(_Raw(ea, eb, t, u, _point3(sa, r.t[0]), "overlap", 0.0))
         elif isinstance(r, Intersection):
-            pa = _point3(sa.curve, r.t)
-            pb = _point3(sb.curve, r.u)
+            pa = _point3(sa, r.t)
+            pb = _point3(sb, r.u)
             point = (0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]))
             out.append(_Raw(ea, eb, sa.edge_param(r.t), sb.edge_param(r.u), point, r.kind, math.dist(pa, pb)))
     return out
 
 
-def _point3(curve: RationalBezier, s: float) -> tuple[float, float, float]:
+def _point3(segment: ocp.Segment, s: float) -> tuple[float, float, float]:
     """The point of a space segment at ``s`` (Bernstein sum of the homogeneous rows; ends exact)."""
-    h = curve.homogeneous
+    h = segment.homogeneous
     n = h.shape[0] - 1
     if s <= 0.0 or s >= 1.0:
         row = h[0] if s <= 0.0 else h[n]
@@ -407,8 +436,6 @@ def _inside(o: _Raw, r: _Raw, tol: float) -> bool:
 
 def _shared_vertex_contact(r: _Raw, tol: float) -> bool:
     """True for the contact at a vertex joining two distinct edges (self-intersection mode)."""
-    from OCP.BRep import BRep_Tool
-
     ea, eb = r.ea, r.eb
     for va in ea.vertices:
         for vb in eb.vertices:
@@ -431,7 +458,7 @@ def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float]:
         raise InvalidInputError(f"expected shape {which} to have at least one edge with a curve; it has none")
     everyone = infos_a if b is None else infos_a + infos_b
     ftol = _default_tol(everyone) if tol is None else _check_tol(tol)
-    frame = ocp.planar_frame(_all_points(everyone), ftol * _PLANE_FRACTION)
+    frame = _common_frame(everyone, ftol)
     _set_plane(everyone, frame)
     planar = frame is not None
     jobs: list[_Job] = []

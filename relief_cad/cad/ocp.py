@@ -37,6 +37,7 @@ approximated by OCCT (``GeomConvert_ApproxCurve``) and flagged
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
@@ -116,14 +117,18 @@ _MAX_BEZIER_DEGREE = 25  # OCCT's Geom_BezierCurve limit
 
 
 # --------------------------------------------------------------------------- segments
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Segment:
     """One rational Bézier piece of an edge and its exact parameter map.
 
     Attributes
     ----------
+    homogeneous : ndarray, shape (n + 1, 4)
+        The piece's homogeneous control points ``[w x, w y, w z, w]`` in global
+        coordinates (read-only).
     curve : RationalBezier
-        The piece in global coordinates, control points shape ``(n + 1, 3)``.
+        The piece as a curve, control points shape ``(n + 1, 3)`` (built on first
+        access from :attr:`homogeneous`; see :meth:`from_curve`).
     t0, t1 : float
         The edge parameters at ``s = 0`` and ``s = 1`` (``t0 < t1``).
     mapping : {"linear", "circular", "hyperbolic"}
@@ -139,12 +144,12 @@ class Segment:
 
     Examples
     --------
-    >>> seg = Segment(RationalBezier([[0, 0, 0], [1, 0, 0]]), 2.0, 4.0)
+    >>> seg = Segment.from_curve(RationalBezier([[0, 0, 0], [1, 0, 0]]), 2.0, 4.0)
     >>> seg.edge_param(0.25), seg.segment_param(3.0)
     (2.5, 0.5)
     """
 
-    curve: RationalBezier
+    homogeneous: np.ndarray
     t0: float
     t1: float
     mapping: str = "linear"
@@ -152,6 +157,30 @@ class Segment:
     scale: float = 1.0
     approximate: bool = False
     error: float = 0.0
+
+    @classmethod
+    def from_curve(cls, curve: RationalBezier, t0: float, t1: float, **kwargs: Any) -> Segment:
+        """Build a segment from a space curve (keyword arguments as the attributes).
+
+        Examples
+        --------
+        >>> Segment.from_curve(RationalBezier([[0, 0, 0], [1, 0, 0]]), 0.0, 1.0).curve.degree
+        1
+        """
+        seg = cls(curve.homogeneous, float(t0), float(t1), **kwargs)
+        seg.__dict__["curve"] = curve
+        return seg
+
+    @functools.cached_property
+    def curve(self) -> RationalBezier:
+        """The piece as a :class:`~relief_cad.curves.RationalBezier` (space, dim 3)."""
+        return _make_curve(self.homogeneous)
+
+    @functools.cached_property
+    def control_points(self) -> np.ndarray:
+        """Cartesian control points, shape ``(n + 1, 3)``."""
+        h = self.homogeneous
+        return h[:, :3] / h[:, 3:]  # type: ignore[no-any-return]
 
     @property
     def t_range(self) -> tuple[float, float]:
@@ -173,7 +202,7 @@ class Segment:
 
         Examples
         --------
-        >>> Segment(RationalBezier([[0, 0, 0], [1, 0, 0]]), 0.0, 2.0).edge_param(1.0)
+        >>> Segment.from_curve(RationalBezier([[0, 0, 0], [1, 0, 0]]), 0.0, 2.0).edge_param(1.0)
         2.0
         """
         if isinstance(s, (float, int)):
@@ -213,7 +242,7 @@ class Segment:
 
         Examples
         --------
-        >>> Segment(RationalBezier([[0, 0, 0], [1, 0, 0]]), 0.0, 2.0).segment_param(2.0)
+        >>> Segment.from_curve(RationalBezier([[0, 0, 0], [1, 0, 0]]), 0.0, 2.0).segment_param(2.0)
         1.0
         """
         if isinstance(t, (float, int)):
@@ -441,7 +470,7 @@ def _quadratic_spans(
         mid = k0 + half
         x1, y1 = a * fx(k1), b * fy(k1)
         h = _apply(_rows(frame, [(x0, y0, 1.0), (a * fx(mid), b * fy(mid), fx(half)), (x1, y1, 1.0)]), m)
-        out.append(Segment(_make_curve(h), k0, k1, mapping, mid, fs(0.5 * half)))
+        out.append(Segment(h, k0, k1, mapping, mid, fs(0.5 * half)))
         x0, y0 = x1, y1
     return out
 
@@ -454,7 +483,7 @@ def _parabola_segment(curve: Any, first: float, last: float, m: np.ndarray | Non
         (first * last / f4, 0.5 * (first + last), 1.0),
         (last * last / f4, last, 1.0),
     ]
-    return [Segment(_make_curve(_apply(_rows(_conic_frame(curve), coords), m)), first, last)]
+    return [Segment(_apply(_rows(_conic_frame(curve), coords), m), first, last)]
 
 
 def _line_segment(curve: Any, first: float, last: float, m: np.ndarray | None) -> list[Segment]:
@@ -467,7 +496,7 @@ def _line_segment(curve: Any, first: float, last: float, m: np.ndarray | None) -
             (ox + last * dx, oy + last * dy, oz + last * dz, 1.0),
         ]
     )
-    return [Segment(_make_curve(_apply(h, m)), first, last)]
+    return [Segment(_apply(h, m), first, last)]
 
 
 def _bezier_rows(bez: Any) -> np.ndarray:
@@ -488,7 +517,7 @@ def _bezier_segment(curve: Any, first: float, last: float, m: np.ndarray | None)
     whole = _make_curve(h)
     if first != 0.0 or last != 1.0:
         whole = whole.segment(first, last)
-    return [Segment(whole, first, last)]
+    return [Segment.from_curve(whole, first, last)]
 
 
 def _bspline_segments(curve: Any, first: float, last: float, m: np.ndarray | None) -> list[Segment]:
@@ -507,7 +536,7 @@ def _bspline_segments(curve: Any, first: float, last: float, m: np.ndarray | Non
         if ks[i + 1] <= ks[i]:
             continue
         h = _apply(_bezier_rows(conv.Arc(i + 1)), m)
-        out.append(Segment(_make_curve(h), ks[i], ks[i + 1]))
+        out.append(Segment(h, ks[i], ks[i + 1]))
     return out
 
 
@@ -525,7 +554,7 @@ def _approx_segments(
         )
     err = float(approx.MaxError())
     segs = _bspline_segments(approx.Curve(), first, last, m)
-    return [Segment(s.curve, s.t0, s.t1, approximate=True, error=err) for s in segs]
+    return [Segment(s.homogeneous, s.t0, s.t1, approximate=True, error=err) for s in segs]
 
 
 def edge_segments(
@@ -622,7 +651,7 @@ def _curve_segments(
 
 def _check_length(segs: list[Segment]) -> list[Segment]:
     """Refuse free-form edges whose control points all coincide (lines and conics cannot)."""
-    pts = np.vstack([s.curve.control_points for s in segs]) if len(segs) > 1 else segs[0].curve.control_points
+    pts = np.vstack([s.control_points for s in segs]) if len(segs) > 1 else segs[0].control_points
     if not (pts != pts[0]).any():
         raise DegenerateCurveError(
             "expected an edge of non-zero length; received one whose every control point is "
