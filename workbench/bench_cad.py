@@ -59,7 +59,7 @@ def pairs() -> dict[str, tuple[Any, Any]]:
     spline = bd.Edge.make_spline([(-3, -1), (-1, 2), (0, -1.5), (1.5, 1.8), (3, -0.5)])
     glyph = bd.Text("S", 10).edges()
     glyph_a = max(glyph, key=lambda e: e.length)
-    glyph_b = glyph_a.rotate(bd.Axis.Z, 20).translate((0.5, 0.3, 0))
+    glyph_b = glyph_a.rotate(bd.Axis(tuple(glyph_a.center()), (0, 0, 1)), 60)
     return {
         "line_line": (bd.Edge.make_line((0, 0), (4, 2)), bd.Edge.make_line((0, 3), (3, 0))),
         "arc_line": (
