@@ -28,6 +28,7 @@ curves...) are evaluated by OCCT in binary64 and the verdict says so.
 from __future__ import annotations
 
 import base64
+import dataclasses
 import html
 import io
 import math
@@ -1011,8 +1012,6 @@ def _in_range(x: float, rng: tuple[float, float], pad: float) -> bool:
 
 def _merge_overlaps(results: list[EdgeResult], pad: float) -> list[EdgeResult]:
     """Join one side's overlaps whose ``t`` ranges meet (OCCT sometimes fragments one overlap)."""
-    import dataclasses
-
     ovs = sorted((r for r in results if isinstance(r, EdgeOverlap)), key=lambda r: r.t[0])
     merged: list[EdgeOverlap] = []
     for o in ovs:
@@ -1087,7 +1086,11 @@ def _match_side(
             cb: ExactCurve = cb,
         ) -> PointCheck:
             if (side, k) not in refined:
-                refined[(side, k)] = arbitrate_point(ca, cb, res.t, res.u, tol=tol)
+                chk = arbitrate_point(ca, cb, res.t, res.u, tol=tol)
+                if ca is cb and abs(chk.t - chk.u) <= 1e-9 * (ca.last - ca.first):
+                    # a double point of one edge that collapsed onto t == u: not a double point
+                    chk = dataclasses.replace(chk, holds=False, kind="miss", distance=math.inf)
+                refined[(side, k)] = chk
             return refined[(side, k)]
 
         def errors(i: int, j: int, r: EdgeIntersection, o: EdgeIntersection) -> tuple[float, float]:
@@ -1191,7 +1194,9 @@ def _judge_point(
         return Verdict(
             other,
             "nothing",
-            f"{side}'s point is spurious: the closest approach nearby is {check.distance:.3g} > tol",
+            f"{side}'s point is spurious: the closest approach nearby is {check.distance:.3g} > tol"
+            if math.isfinite(check.distance)
+            else f"{side}'s double point is spurious: refining it collapses onto one parameter",
             check.distance,
             check.exact,
         )

@@ -123,3 +123,22 @@ def test_arbitrate_overlap_on_a_curve_and_a_piece_of_itself():
     assert not far.holds and far.status == "tangent"
     assert [p.t for p in far.points] == [pytest.approx(0.5, abs=1e-15)]
     assert math.isclose(far.points[0].point[1], 1.5, abs_tol=1e-15)
+
+
+def test_self_intersection_double_point_and_a_collapsing_fake():
+    loop = bezier([(0, 0, 0), (4, 3, 0), (-1, 3, 0), (3, 0, 0)])
+    # truth: x(t) = x(u), y(t) = y(u) with t != u; y = 9t(1-t) is symmetric, so u = 1 - t and
+    # x(t) = x(1-t) gives 12t - 27t^2 + 18t^3 ... solved by sympy
+    import sympy as sp
+
+    t = sp.symbols("t")
+    x = 12 * t * (1 - t) ** 2 - 3 * t**2 * (1 - t) + 3 * t**3
+    roots = [r for r in sp.solve(sp.expand(x - x.subs(t, 1 - t)), t) if r.is_real and 0 <= r < sp.Rational(1, 2)]
+    (t0,) = [float(r) for r in roots]
+    c = compare(loop, relief=[point(t0, 1 - t0, (0.0, 0.0, 0.0))])
+    assert c.disagreements == [] and len(c.agreed) == 1
+    assert c.agreed[0].occt.t == pytest.approx(t0, abs=1e-7)
+    # a fake double point at t = u = 0.3 refines onto t == u: spurious
+    c = compare(loop, relief=[point(0.3, 0.3 + 1e-12, (0.0, 0.0, 0.0))])
+    fake = [d for d in c.disagreements if d.claimant == "relief_cad"]
+    assert len(fake) == 1 and fake[0].verdict.winner == "occt"

@@ -108,3 +108,16 @@ def test_bad_input_is_named():
     BRep_Builder().MakeCompound(empty)
     with pytest.raises(ShapeError, match="no edges"):
         occt_intersections(empty)
+
+
+def test_build123d_and_cadquery_inputs_get_their_own_edges_back():
+    import build123d as bd
+    import cadquery as cq
+
+    arc = bd.Edge.make_circle(2.0)
+    line = bd.Edge.make_line((-3, 1), (3, 1))
+    res = occt_intersections(arc, line)
+    assert len(res) == 2 and all(isinstance(r.edge_a, bd.Edge) and isinstance(r.edge_b, bd.Edge) for r in res)
+    assert sorted(r.point[0] for r in res) == pytest.approx([-math.sqrt(3), math.sqrt(3)], abs=1e-9)
+    cq_res = occt_intersections(cq.Edge.makeCircle(2.0), cq.Edge.makeLine(cq.Vector(-3, 1, 0), cq.Vector(3, 1, 0)))
+    assert len(cq_res) == 2 and isinstance(cq_res[0].edge_a, cq.Edge)
