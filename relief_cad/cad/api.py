@@ -463,15 +463,18 @@ def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float]:
     planar = frame is not None
     jobs: list[_Job] = []
     edge_pairs: list[tuple[_EdgeInfo, _EdgeInfo, bool]] = []
-    for ia, ea in enumerate(infos_a):
-        for ib, eb in enumerate(infos_b):
-            if b is None and ib < ia:
-                continue
-            if np.any(ea.lo - ftol > eb.hi) or np.any(eb.lo - ftol > ea.hi):
-                continue
-            same = b is None and ia == ib
-            edge_pairs.append((ea, eb, same))
-            jobs.extend(_pair_jobs(ea, eb, same, ftol, planar))
+    lo_a = np.array([e.lo for e in infos_a]) - ftol
+    hi_a = np.array([e.hi for e in infos_a]) + ftol
+    lo_b = lo_a if b is None else np.array([e.lo for e in infos_b])
+    hi_b = hi_a if b is None else np.array([e.hi for e in infos_b])
+    close = np.all((lo_a[:, None, :] <= hi_b[None, :, :]) & (lo_b[None, :, :] <= hi_a[:, None, :]), axis=2)
+    for ia, ib in zip(*np.nonzero(close), strict=True):
+        if b is None and ib < ia:
+            continue
+        ea, eb = infos_a[ia], infos_b[ib]
+        same = b is None and ia == ib
+        edge_pairs.append((ea, eb, same))
+        jobs.extend(_pair_jobs(ea, eb, same, ftol, planar))
     per_pair: dict[tuple[int, int], list[_Raw]] = {}
     for job, found in zip(jobs, _solve(jobs, ftol), strict=True):
         if found:
