@@ -274,7 +274,7 @@ def write_report(
         rows = []
         for d in r["disagreements"]:
             rows.append(
-                f"<tr><td class='l'>only {html.escape(d['claimant'])}</td>"
+                f"<tr><td class='l'>{html.escape(d.get('status', 'only ' + d['claimant']))}</td>"
                 f"<td class='l'>{html.escape(_where(d['claim']))}"
                 f"</td><td class='l'>{html.escape(d['claim'].get('kind', ''))}</td>"
                 f"<td class='l win-{html.escape(d['winner'])}'>{html.escape(d['winner'])}</td>"

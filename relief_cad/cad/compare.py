@@ -631,6 +631,13 @@ class Disagreement:
     verdict: Verdict
 
     @property
+    def status(self) -> str:
+        """``"only relief_cad"``, ``"only occt"``, or ``"range dispute"`` (both report an overlap)."""
+        if isinstance(self.claim, EdgeOverlap) and any(isinstance(c, EdgeOverlap) for c in self.counter):
+            return "range dispute"
+        return f"only {self.claimant}"
+
+    @property
     def index(self) -> tuple[int, int]:
         """The edge pair ``(index_a, index_b)``."""
         return (self.claim.index_a, self.claim.index_b)
@@ -754,6 +761,7 @@ class Comparison:
             "disagreements": [
                 {
                     "claimant": d.claimant,
+                    "status": d.status,
                     "claim": _res_dict(d.claim),
                     "counter": [_res_dict(c) for c in d.counter],
                     "winner": d.verdict.winner,
@@ -791,7 +799,7 @@ class Comparison:
         for d in self.disagreements:
             rows.append(
                 (
-                    f"only {d.claimant}",
+                    d.status,
                     _where(d.claim),
                     d.claim.kind,
                     f"{d.verdict.distance:.2e}",
@@ -1064,6 +1072,13 @@ def _match_side(
                     agreed.append(Match(r, o, dist, dt, du))
                     used_r.add(i)
                     used_o.add(j)
+        # 1b. matched overlaps whose ends differ by more than tol: whose range is right?
+        for m in [m for m in agreed if isinstance(m.relief, EdgeOverlap) and m.distance > tol]:
+            if (m.relief.index_a, m.relief.index_b) != (ia, ib):
+                continue
+            assert isinstance(m.relief, EdgeOverlap) and isinstance(m.occt, EdgeOverlap)
+            agreed.remove(m)
+            disagreements.append(_judge_ranges(ca, cb, m.relief, m.occt, tol))
         # 2. points within tol
         cand = []
         for i, r in enumerate(rel):
@@ -1176,6 +1191,42 @@ def _coincide_around(ca: ExactCurve, cb: ExactCurve, check: PointCheck, tol: flo
                 return False
             near += 1
         return near > 0
+
+
+def _judge_ranges(
+    ca: ExactCurve, cb: ExactCurve, rel: EdgeOverlap, occ: EdgeOverlap, tol: float
+) -> Disagreement:
+    """Both sides report an overlap here, with ends farther apart than tol: check both ranges."""
+    rchk = arbitrate_overlap(ca, cb, rel.t, rel.u, tol=tol)
+    ochk = arbitrate_overlap(ca, cb, occ.t, occ.u, tol=tol)
+    worst = max(rchk.max_distance, ochk.max_distance)
+
+    def rng(o: EdgeOverlap) -> str:
+        return f"t [{o.t[0]:.6g}, {o.t[1]:.6g}]"
+
+    if rchk.holds and ochk.holds:
+        longer_r = (rel.t[1] - rel.t[0]) >= (occ.t[1] - occ.t[0])
+        win, lose = ("relief_cad", "occt") if longer_r else ("occt", "relief_cad")
+        claim, counter = (rel, occ) if longer_r else (occ, rel)
+        reason = (
+            f"both ranges are true overlaps; {lose} reports only part of it ({rng(counter)} of {rng(claim)})"
+        )
+        return Disagreement(win, claim, (counter,), Verdict(win, "overlap", reason, worst))
+    if rchk.holds or ochk.holds:
+        good, bad = (rel, occ) if rchk.holds else (occ, rel)
+        win = "relief_cad" if rchk.holds else "occt"
+        lose = "occt" if rchk.holds else "relief_cad"
+        badchk = ochk if rchk.holds else rchk
+        reason = (
+            f"{lose}'s overlap {rng(bad)} goes beyond the coincidence (distance up to "
+            f"{badchk.max_distance:.3g} > tol); {win}'s {rng(good)} holds"
+        )
+        return Disagreement(lose, bad, (good,), Verdict(win, "overlap", reason, badchk.max_distance))
+    reason = (
+        f"neither range holds: relief_cad {rng(rel)} (max distance {rchk.max_distance:.3g}), "
+        f"OCCT {rng(occ)} (max distance {ochk.max_distance:.3g})"
+    )
+    return Disagreement("occt", occ, (rel,), Verdict("neither", ochk.status, reason, worst))
 
 
 def _judge_point(

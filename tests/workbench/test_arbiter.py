@@ -142,3 +142,15 @@ def test_self_intersection_double_point_and_a_collapsing_fake():
     c = compare(loop, relief=[point(0.3, 0.3 + 1e-12, (0.0, 0.0, 0.0))])
     fake = [d for d in c.disagreements if d.claimant == "relief_cad"]
     assert len(fake) == 1 and fake[0].verdict.winner == "occt"
+
+
+def test_overlap_range_disputes():
+    from relief_cad.cad.results import EdgeOverlap
+
+    a, b = segment((0, 0, 0), (4, 0, 0)), segment((1, 0, 0), (3, 0, 0))
+    part = EdgeOverlap(0, 0, None, None, (1.0, 2.0), (0.0, 1.0), None)
+    (d,) = compare(a, b, relief=[part]).disagreements
+    assert d.status == "range dispute" and d.verdict.winner == "occt" and "only part" in d.verdict.reason
+    too_long = EdgeOverlap(0, 0, None, None, (0.5, 3.0), (-0.5, 2.0), None)
+    (d,) = compare(a, b, relief=[too_long]).disagreements
+    assert d.verdict.winner == "occt" and d.claimant == "relief_cad" and d.verdict.distance == pytest.approx(0.5)

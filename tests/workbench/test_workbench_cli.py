@@ -118,7 +118,10 @@ def test_compare_on_a_local_dask_cluster(corpus, tmp_path):
     distributed = pytest.importorskip("distributed")
     with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False,
                                   dashboard_address=None) as cluster, distributed.Client(cluster) as client:
-        summary = run_compare(corpus, tmp_path / "dask", scheduler=client, progress=False, limit=6)
+        assert client.status == "running"
+        # the address, as `compare --scheduler tcp://...` passes it
+        summary = run_compare(corpus, tmp_path / "dask", scheduler=cluster.scheduler_address, progress=False,
+                              limit=6)
     assert summary["complete"]
     recs = load_results(tmp_path / "dask" / "results.jsonl")
     assert len(recs) == 6 and {r["status"] for r in recs} == {"ok"}
