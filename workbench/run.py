@@ -267,9 +267,21 @@ def run_compare(
                     import multiprocessing as mp
 
                     ctx = mp.get_context("fork" if sys.platform.startswith("linux") else "spawn")
+                    import threading
+
+                    # at most 4 batches per worker in flight: the pool's feeder thread would
+                    # otherwise read a corpus of millions of pairs into memory
+                    slots = threading.BoundedSemaphore(4 * n)
+
+                    def bounded() -> Iterator[list[Item | CorpusError]]:
+                        for b in batches():
+                            slots.acquire()
+                            yield b
+
                     pool = ctx.Pool(n, maxtasksperchild=200)
                     try:
-                        for recs in pool.imap_unordered(_evaluate_batch, batches(), chunksize=1):
+                        for recs in pool.imap_unordered(_evaluate_batch, bounded(), chunksize=1):
+                            slots.release()
                             if write(recs):
                                 interrupted = True
                                 break
