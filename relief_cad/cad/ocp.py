@@ -521,6 +521,19 @@ def _bezier_segment(curve: Any, first: float, last: float, m: np.ndarray | None)
 
 
 def _bspline_segments(curve: Any, first: float, last: float, m: np.ndarray | None) -> list[Segment]:
+    degree = curve.Degree()
+    if (
+        curve.NbKnots() == 2
+        and not curve.IsPeriodic()
+        and curve.Multiplicity(1) == curve.Multiplicity(2) == degree + 1
+    ):
+        # a single clamped span is a Bézier curve already: its poles are the control points
+        h = _apply(_bezier_rows(curve), m)
+        k0, k1 = curve.Knot(1), curve.Knot(2)
+        if first == k0 and last == k1:
+            return [Segment(h, first, last)]
+        piece = _make_curve(h).segment((first - k0) / (k1 - k0), (last - k0) / (k1 - k0))
+        return [Segment.from_curve(piece, first, last)]
     try:
         conv = GeomConvert_BSplineCurveToBezierCurve(curve, first, last, 1e-12)
     except Exception as exc:  # noqa: BLE001 - OCCT raises Standard_Failure subclasses

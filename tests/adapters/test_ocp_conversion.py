@@ -134,6 +134,18 @@ def bspline_multiplicities(ax: gp_Ax2) -> TopoDS_Edge:
     return _edge(BRepBuilderAPI_MakeEdge(g, 0.2, 2.9))
 
 
+def bspline_single_span_trimmed(ax: gp_Ax2) -> TopoDS_Edge:
+    pts = [(0, 0), (1, 2), (3, -1), (4, 1)]
+    g = Geom_BSplineCurve(_poles(ax, pts), _reals([1.5, 4.0]), _ints([4, 4]), 3)
+    return _edge(BRepBuilderAPI_MakeEdge(g, 2.0, 3.75))
+
+
+def bspline_single_span_rational(ax: gp_Ax2) -> TopoDS_Edge:
+    pts = [(0, 0), (1, 2), (3, -1)]
+    g = Geom_BSplineCurve(_poles(ax, pts), _reals([1.0, 3.0, 0.5]), _reals([-1.0, 1.0]), _ints([3, 3]), 2)
+    return _edge(BRepBuilderAPI_MakeEdge(g))
+
+
 def bspline_c0_knot(ax: gp_Ax2) -> TopoDS_Edge:
     pts = [(0, 0), (1, 2), (2, 2), (3, 0), (4, -2), (5, -1), (6, 0)]
     g = Geom_BSplineCurve(_poles(ax, pts), _reals([0, 1, 2]), _ints([4, 3, 4]), 3)
@@ -173,6 +185,7 @@ def trimmed_circle(ax: gp_Ax2) -> TopoDS_Edge:
 OCP_BUILDERS = [
     line, line_trimmed, circle_full, circle_arc, circle_arc_over_seam, ellipse_full, ellipse_arc,
     parabola, hyperbola, bezier_poly, bezier_rational_trimmed, bspline_multiplicities, bspline_c0_knot,
+    bspline_single_span_trimmed, bspline_single_span_rational,
     bspline_rational, bspline_periodic, bspline_periodic_over_seam, bspline_space, trimmed_circle,
 ]
 
