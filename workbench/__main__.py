@@ -14,19 +14,20 @@ from __future__ import annotations
 import argparse
 import sys
 import time
+from collections.abc import Iterator
 from pathlib import Path
 
 __all__ = ["main"]
 
 
 def _cmd_corpus(args: argparse.Namespace) -> int:
-    from .corpus import RANDOM_FAMILIES, CorpusError, build_corpus, bundled_items, write_corpus
+    from .corpus import RANDOM_FAMILIES, CorpusError, Item, build_corpus, bundled_items, write_corpus
 
     fams = args.families.split(",") if args.families else list(RANDOM_FAMILIES) + ["glyph", "sketch", "step"]
     problems: list[str] = []
     source = bundled_items() if args.bundled else build_corpus(fams, args.count, args.seed, args.step or ())
 
-    def items():  # type: ignore[no-untyped-def]
+    def items() -> Iterator[Item]:
         for it in source:
             if isinstance(it, CorpusError):
                 problems.append(str(it))

@@ -335,7 +335,8 @@ def _mirror(points: np.ndarray, p: np.ndarray, d: np.ndarray) -> np.ndarray:
     d = d / np.linalg.norm(d)
     rel = points - p
     along = rel @ d
-    return p + 2 * np.outer(along, d) - rel
+    out: np.ndarray = p + 2 * np.outer(along, d) - rel
+    return out
 
 
 # --------------------------------------------------------------------------- random families

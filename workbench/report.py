@@ -195,7 +195,9 @@ def write_report(
                 items[it.id] = it
 
     # histograms
-    err_rel, err_occ, ratios = [], [], []
+    err_rel: list[float] = []
+    err_occ: list[float] = []
+    ratios: list[float] = []
     for r in recs:
         if r.get("status") != "ok":
             continue

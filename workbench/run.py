@@ -300,13 +300,14 @@ def run_compare(
 
 
 def _run_dask(scheduler: Any, batches: Iterator[list[Item | CorpusError]], write: Any) -> bool:
-    from distributed import Client, as_completed
+    import importlib
 
-    client = scheduler if isinstance(scheduler, Client) else Client(scheduler)
+    dist: Any = importlib.import_module("distributed")  # untyped library
+    client = scheduler if isinstance(scheduler, dist.Client) else dist.Client(scheduler)
     own = client is not scheduler
     try:
         window = max(4, 4 * sum(client.nthreads().values()))
-        ac = as_completed()
+        ac = dist.as_completed()
         for _ in range(window):
             b = next(batches, None)
             if b is None:
