@@ -514,10 +514,9 @@ def _bezier_rows(bez: Any) -> np.ndarray:
 
 def _bezier_segment(curve: Any, first: float, last: float, m: np.ndarray | None) -> list[Segment]:
     h = _apply(_bezier_rows(curve), m)
-    whole = _make_curve(h)
-    if first != 0.0 or last != 1.0:
-        whole = whole.segment(first, last)
-    return [Segment.from_curve(whole, first, last)]
+    if first == 0.0 and last == 1.0:
+        return [Segment(h, first, last)]
+    return [Segment.from_curve(_make_curve(h).segment(first, last), first, last)]
 
 
 def _bspline_segments(curve: Any, first: float, last: float, m: np.ndarray | None) -> list[Segment]:
