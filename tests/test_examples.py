@@ -361,3 +361,82 @@ def test_step_intersections_bad_file(tmp_path: Path) -> None:
                            "--out", str(tmp_path / "o")], capture_output=True, text=True, timeout=120,
                           env=dict(os.environ, MPLBACKEND="Agg"))
     assert proc.returncode != 0 and "cannot read STEP file" in proc.stderr
+
+
+# --------------------------------------------------------------------------- cadquery_notebook.ipynb
+
+
+def _outputs_text(nb) -> list[str]:
+    texts = []
+    for cell in nb.cells:
+        if cell.cell_type != "code":
+            continue
+        parts = []
+        for o in cell.get("outputs", []):
+            if o.output_type == "stream":
+                parts.append(o.text)
+            elif o.output_type in ("execute_result", "display_data"):
+                parts.append(o.data.get("text/plain", ""))
+                parts.append(o.data.get("text/html", ""))
+        texts.append("\n".join(parts))
+    return texts
+
+
+def _check_notebook_outputs(nb) -> None:
+    import cadquery as cq
+
+    for cell in nb.cells:
+        for o in cell.get("outputs", []):
+            assert o.output_type != "error", f"{o.get('ename')}: {o.get('evalue')}"
+    text = "\n".join(_outputs_text(nb))
+
+    # 1. the plugin's points: the spline crosses the circle x^2 + y^2 = 4 where |p| - 2 changes sign
+    points = [np.array([float(x), float(y)]) for x, y in re.findall(r"point \d+: \((\S+), (\S+), 0\.0\)", text)]
+    spline = cq.Workplane("XY").spline([(-4, 0), (-2, 2.5), (0, -2.5), (2, 2.5), (4, 0)], includeCurrent=False).val()
+    truth = _roots_along(spline, lambda p: float(np.hypot(p[0], p[1]) - 2.0), n=2000)
+    assert len(points) == len(truth) == 4
+    for p in truth:
+        assert min(np.linalg.norm(p[:2] - q) for q in points) < 1e-8
+    m = re.search(r"(\d+) holes; volume (\S+) \(expected (\S+)\)", text)
+    assert m and int(m.group(1)) == 4 and float(m.group(2)) == pytest.approx(float(m.group(3)), abs=1e-7)
+    assert len(re.findall(r"^crossing\s+t=", text, re.MULTILINE)) == 4
+    assert "4 agreed, 0 disagreement(s)" in text  # the plugin's points and OCCT's agree
+    assert "<table>" in text and "data:image/png;base64," in text  # table + plot in the HTML view
+
+    # 4. the disagreement: T_20 crosses the axis at x = cos((2k - 1) pi / 40), all 20 found by relief_cad
+    assert "relief_cad: 20 crossings" in text
+    m = re.search(r"relief_cad: (\d+) points, OCCT: (\d+) points; agreed (\d+), disagreements (\d+): "
+                  r"relief_cad right (\d+), OCCT right (\d+), neither (\d+)", text)
+    assert m, "summary line missing"
+    n_rel, n_occt, agreed, dis, rel_right, occt_right, neither = map(int, m.groups())
+    assert n_rel == 20 and dis >= 1 and rel_right == dis and occt_right == 0 and neither == 0
+    assert agreed + dis == 20
+    missed = [float(t) for t in re.findall(r"only relief_cad t=(\S+): winner relief_cad \(crossing\)", text)]
+    assert len(missed) == dis
+    roots_t = [(math.cos((2 * k - 1) * math.pi / 40) + 1) / 2 for k in range(1, 21)]
+    for t in missed:
+        assert min(abs(t - r) for r in roots_t) < 1e-8
+
+
+def test_cadquery_notebook_saved_with_outputs() -> None:
+    import nbformat
+
+    nb = nbformat.read(EXAMPLES / "cadquery_notebook.ipynb", as_version=4)
+    code = [c for c in nb.cells if c.cell_type == "code"]
+    assert code and all(c.get("execution_count") for c in code), "save the notebook executed"
+    _check_notebook_outputs(nb)
+
+
+def test_cadquery_notebook_executes(tmp_path: Path) -> None:
+    import nbformat
+    from nbclient import NotebookClient
+
+    nb = nbformat.read(EXAMPLES / "cadquery_notebook.ipynb", as_version=4)
+    for cell in nb.cells:
+        if cell.cell_type == "code":
+            cell.outputs = []
+    os.environ.setdefault("MPLBACKEND", "Agg")
+    # "python3" is ipykernel's own spec in <venv>/share/jupyter/kernels (argv "python" is replaced by
+    # the current interpreter by jupyter_client), so this runs in a fresh venv with ipykernel installed.
+    NotebookClient(nb, timeout=240, kernel_name="python3", resources={"metadata": {"path": str(tmp_path)}}).execute()
+    _check_notebook_outputs(nb)
