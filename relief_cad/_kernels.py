@@ -1,6 +1,6 @@
 """Numba kernels of the planar Bézier-clipping intersector (hot loops only).
 
-Every function here is ``@njit(cache=True)`` and also runs as plain Python when
+Every function here is ``@njit(cache=True, error_model="numpy")`` and also runs as plain Python when
 ``NUMBA_DISABLE_JIT=1``. The public, documented API lives in
 :mod:`relief_cad.intersection` and :mod:`relief_cad.clipping`; these kernels have
 no stability promise.
@@ -55,7 +55,7 @@ _ROUND = 64.0 * _EPS  # rounding level of a residual, relative to the frame size
 # --------------------------------------------------------------------------- helpers
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _grow(arr, n):  # type: ignore[no-untyped-def]
     """Return ``arr`` with room for at least ``n`` rows (copying when it must grow)."""
     if n <= arr.shape[0]:
@@ -66,7 +66,7 @@ def _grow(arr, n):  # type: ignore[no-untyped-def]
     return out
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _segment(H, t0, t1, out):  # type: ignore[no-untyped-def]
     """Homogeneous control points of the sub-curve on ``[t0, t1]`` into ``out``."""
     m = H.shape[0]
@@ -92,7 +92,7 @@ def _segment(H, t0, t1, out):  # type: ignore[no-untyped-def]
                 out[i, 2] = s * out[i, 2] + tt * out[i + 1, 2]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _cartesian(S, P, W):  # type: ignore[no-untyped-def]
     """Cartesian points and weights (weights scaled to max 1) of homogeneous rows ``S``.
 
@@ -121,7 +121,7 @@ def _cartesian(S, P, W):  # type: ignore[no-untyped-def]
     return xlo, xhi, ylo, yhi
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _eval(H, t, wk):  # type: ignore[no-untyped-def]
     """Point, first and second derivative of the rational curve ``H`` at ``t``.
 
@@ -178,7 +178,7 @@ def _eval(H, t, wk):  # type: ignore[no-untyped-def]
 # --------------------------------------------------------------------------- clipping
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def fat_line_kernel(P, perpendicular):  # type: ignore[no-untyped-def]
     """Fat line ``(nx, ny, c, dmin, dmax)`` of control points ``P`` (not widened).
 
@@ -231,7 +231,7 @@ def fat_line_kernel(P, perpendicular):  # type: ignore[no-untyped-def]
     return nx, ny, c, dmin, dmax
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def hull_range_kernel(e):  # type: ignore[no-untyped-def]
     """Parameter range where the convex hull of ``(j / m, e[j])`` reaches ``e >= 0``.
 
@@ -264,7 +264,7 @@ def hull_range_kernel(e):  # type: ignore[no-untyped-def]
     return lo, hi
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def clip_range_kernel(P, W, nx, ny, c, dmin, dmax, e):  # type: ignore[no-untyped-def]
     """Range ``(lo, hi)`` of a rational curve's parameter where ``dmin <= d <= dmax`` is possible.
 
@@ -289,7 +289,7 @@ def clip_range_kernel(P, W, nx, ny, c, dmin, dmax, e):  # type: ignore[no-untype
 # --------------------------------------------------------------------------- polish
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _newton(HA, HB, t, u, wa, wb, iters):  # type: ignore[no-untyped-def]
     """Newton on ``a(t) - b(u) = 0`` from ``(t, u)``, clamped to the unit square.
 
@@ -342,7 +342,7 @@ def _newton(HA, HB, t, u, wa, wb, iters):  # type: ignore[no-untyped-def]
     return bt, bu, bres
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _closest(HA, HB, t, u, wa, wb, iters):  # type: ignore[no-untyped-def]
     """Local minimum of ``|a(t) - b(u)|`` from ``(t, u)`` (damped Newton, clamped).
 
@@ -396,7 +396,7 @@ def _closest(HA, HB, t, u, wa, wb, iters):  # type: ignore[no-untyped-def]
     return t, u, math.sqrt(f2)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _project(H, px, py, wk, nsamp):  # type: ignore[no-untyped-def]
     """Parameter ``u`` of the point of curve ``H`` closest to ``(px, py)``, and the distance."""
     best = math.inf
@@ -431,7 +431,7 @@ def _project(H, px, py, wk, nsamp):  # type: ignore[no-untyped-def]
     return bu, best
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _point_on(H, px, py, tol, S, C, V, e, wk):  # type: ignore[no-untyped-def]
     """Closest point of curve ``H`` to ``(px, py)`` if it may be within ``tol``.
 
@@ -503,7 +503,7 @@ def _point_on(H, px, py, tol, S, C, V, e, wk):  # type: ignore[no-untyped-def]
     return bu, best
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _local_dist(H, px, py, u, wk):  # type: ignore[no-untyped-def]
     """Distance from ``(px, py)`` to curve ``H`` near ``u`` (a few projection Newton steps)."""
     for _ in range(8):
@@ -523,7 +523,7 @@ def _local_dist(H, px, py, u, wk):  # type: ignore[no-untyped-def]
     return math.hypot(x - px, y - py)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _angle_sin(HA, HB, t, u, wa, wb):  # type: ignore[no-untyped-def]
     """``|sin|`` of the angle between the curves' tangents at ``a(t)``, ``b(u)``.
 
@@ -547,14 +547,14 @@ def _angle_sin(HA, HB, t, u, wa, wb):  # type: ignore[no-untyped-def]
 # --------------------------------------------------------------------------- double-double
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _two_sum(a, b):  # type: ignore[no-untyped-def]
     s = a + b
     bb = s - a
     return s, (a - (s - bb)) + (b - bb)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _two_prod(a, b):  # type: ignore[no-untyped-def]
     p = a * b
     c = 134217729.0 * a
@@ -566,21 +566,21 @@ def _two_prod(a, b):  # type: ignore[no-untyped-def]
     return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _dd_add(ah, al, bh, bl):  # type: ignore[no-untyped-def]
     s, e = _two_sum(ah, bh)
     e += al + bl
     return _two_sum(s, e)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _dd_mul(ah, al, bh, bl):  # type: ignore[no-untyped-def]
     p, e = _two_prod(ah, bh)
     e += ah * bl + al * bh
     return _two_sum(p, e)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _dd_div(ah, al, bh, bl):  # type: ignore[no-untyped-def]
     q1 = ah / bh
     ph, pl = _dd_mul(q1, 0.0, bh, bl)
@@ -589,7 +589,7 @@ def _dd_div(ah, al, bh, bl):  # type: ignore[no-untyped-def]
     return _two_sum(q1, q2)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _eval_dd(H, t, wk):  # type: ignore[no-untyped-def]
     """Point of the rational curve ``H`` at ``t`` in double-double ``(xh, xl, yh, yl)``.
 
@@ -615,7 +615,7 @@ def _eval_dd(H, t, wk):  # type: ignore[no-untyped-def]
     return xh, xl, yh, yl
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _polish_dd(HA, HB, t, u, wa, wb, da, db, steps):  # type: ignore[no-untyped-def]
     """A few Newton steps on ``a(t) - b(u)`` with a double-double residual."""
     bt = t
@@ -653,7 +653,7 @@ def _polish_dd(HA, HB, t, u, wa, wb, da, db, steps):  # type: ignore[no-untyped-
 # --------------------------------------------------------------------------- pair solve
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _frame(PA, PB):  # type: ignore[no-untyped-def]
     """Exact translation ``(cx, cy)`` and power-of-two scale of the joint frame."""
     cx = 0.0
@@ -689,7 +689,7 @@ def _frame(PA, PB):  # type: ignore[no-untyped-def]
     return cx, cy, scale
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _bbox_update(P, box):  # type: ignore[no-untyped-def]
     """Grow ``box = [xlo, xhi, ylo, yhi, max|coord|]`` by the points ``P``."""
     for i in range(P.shape[0]):
@@ -702,7 +702,7 @@ def _bbox_update(P, box):  # type: ignore[no-untyped-def]
         box[4] = max(box[4], abs(x), abs(y))
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _default_tol(PA, PB):  # type: ignore[no-untyped-def]
     """:func:`relief_cad.tolerances.default_tolerance` of both control polygons."""
     box = np.empty(5)
@@ -721,7 +721,7 @@ def _default_tol(PA, PB):  # type: ignore[no-untyped-def]
     return tol
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _homog(P, W, cx, cy, scale):  # type: ignore[no-untyped-def]
     """Homogeneous rows of the curve in the frame, weights scaled to max 1."""
     m = P.shape[0]
@@ -737,7 +737,7 @@ def _homog(P, W, cx, cy, scale):  # type: ignore[no-untyped-def]
     return H
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _near_hull(P, px, py, tol):  # type: ignore[no-untyped-def]
     """False when ``(px, py)`` is farther than ``tol`` outside one of ``P``'s fat lines."""
     for perp in (False, True):
@@ -748,7 +748,7 @@ def _near_hull(P, px, py, tol):  # type: ignore[no-untyped-def]
     return True
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _in_overlap(ov, nov, t0, t1, u0, u1, margin):  # type: ignore[no-untyped-def]
     """True when the box lies inside one overlap's parameter rectangle (plus margin)."""
     for k in range(nov):
@@ -761,7 +761,7 @@ def _in_overlap(ov, nov, t0, t1, u0, u1, margin):  # type: ignore[no-untyped-def
     return False
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _coincide(HA, HB, ta, ua, tb, ub, tol, wa, wb, nsamp):  # type: ignore[no-untyped-def]
     """True when a on ``[ta, tb]`` and b on ``[ua, ub]`` coincide (within ``tol``).
 
@@ -769,63 +769,67 @@ def _coincide(HA, HB, ta, ua, tb, ub, tol, wa, wb, nsamp):  # type: ignore[no-un
     """
     u = ua
     direction = 1.0 if ub > ua else -1.0
+    fwd = np.empty(nsamp + 1)
+    fwd[0] = ua
+    fwd[nsamp] = ub
     for k in range(1, nsamp):
         s = ta + (tb - ta) * (k / nsamp)
         px, py, _a, _b, _c, _d = _eval(HA, s, wa)
-        # local projection by Newton from the previous u
-        uu = u
-        for _ in range(30):
-            x, y, dx, dy, ddx, ddy = _eval(HB, uu, wb)
-            fx = x - px
-            fy = y - py
-            g = fx * dx + fy * dy
-            h = dx * dx + dy * dy + fx * ddx + fy * ddy
-            if h <= 0.0:
-                h = dx * dx + dy * dy
-                if h == 0.0:
-                    break
-            nu = min(1.0, max(0.0, uu - g / h))
-            if abs(nu - uu) <= 1e-15:
-                uu = nu
-                break
-            uu = nu
+        uu = _local_proj(HB, px, py, u, wb)
         x, y, _a, _b, _c, _d = _eval(HB, uu, wb)
         if math.hypot(x - px, y - py) > tol:
             return False
         if (uu - u) * direction < -1e-12:
             return False
         u = uu
+        fwd[k] = uu
     if (ub - u) * direction < -1e-12:
         return False
-    # and back: b's stretch lies on a
-    t = ta
+    # and back: b's stretch lies on a (seeded from the forward correspondence)
     for k in range(1, nsamp):
         s = ua + (ub - ua) * (k / nsamp)
+        j = 0
+        while j < nsamp - 1 and (fwd[j + 1] - s) * direction < 0.0:
+            j += 1
+        seed = ta + (tb - ta) * (j / nsamp)
         px, py, _a, _b, _c, _d = _eval(HB, s, wb)
-        tt = t
-        for _ in range(30):
-            x, y, dx, dy, ddx, ddy = _eval(HA, tt, wa)
-            fx = x - px
-            fy = y - py
-            g = fx * dx + fy * dy
-            h = dx * dx + dy * dy + fx * ddx + fy * ddy
-            if h <= 0.0:
-                h = dx * dx + dy * dy
-                if h == 0.0:
-                    break
-            nt = min(1.0, max(0.0, tt - g / h))
-            if abs(nt - tt) <= 1e-15:
-                tt = nt
-                break
-            tt = nt
+        tt = _local_proj(HA, px, py, seed, wa)
         x, y, _a, _b, _c, _d = _eval(HA, tt, wa)
         if math.hypot(x - px, y - py) > tol:
             return False
-        t = tt
     return True
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
+def _local_proj(H, px, py, u, wk):  # type: ignore[no-untyped-def]
+    """Parameter of the point of ``H`` nearest ``(px, py)`` close to ``u`` (safeguarded Newton)."""
+    x, y, dx, dy, ddx, ddy = _eval(H, u, wk)
+    best = math.hypot(x - px, y - py)
+    bu = u
+    for _ in range(30):
+        fx = x - px
+        fy = y - py
+        g = fx * dx + fy * dy
+        h = dx * dx + dy * dy + fx * ddx + fy * ddy
+        if h <= 0.0:
+            h = dx * dx + dy * dy
+        if not h > 0.0:
+            # zero speed (repeated control points): nudge inwards
+            nu = min(1.0, max(0.0, u + (1e-6 if u < 0.5 else -1e-6)))
+        else:
+            nu = min(1.0, max(0.0, u - g / h))
+        if abs(nu - u) <= 1e-16:
+            break
+        u = nu
+        x, y, dx, dy, ddx, ddy = _eval(H, u, wk)
+        d = math.hypot(x - px, y - py)
+        if d < best:
+            best = d
+            bu = u
+    return bu
+
+
+@njit(cache=True, error_model="numpy")
 def _add(res, nres, pair, kind, t, u, t1, u1, x, y, dist):  # type: ignore[no-untyped-def]
     res = _grow(res, nres + 1)
     res[nres, 0] = pair
@@ -840,7 +844,7 @@ def _add(res, nres, pair, kind, t, u, t1, u1, x, y, dist):  # type: ignore[no-un
     return res, nres + 1
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type: ignore[no-untyped-def]
     """Intersect two planar rational Bézier curves; append result rows to ``res``.
 
@@ -1077,7 +1081,7 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
                 fresh = True
                 continue
             # stalled: a flat band contact, or split the larger sub-curve
-            if wida <= tl and widb <= tl:
+            if wida <= tl and widb <= tl and exa <= 4.0 * exb + tl and exb <= 4.0 * exa + tl:
                 cands = _grow(cands, ncand + 1)
                 cands[ncand, 0] = t0
                 cands[ncand, 1] = t1
@@ -1279,12 +1283,17 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
             if dt <= 1e-9 and du <= 1e-9:
                 same = True
             elif dt <= 1e-9 or du <= 1e-9:
-                # one parameter shared: the same point of a point-like stretch
-                x, y, _a, _b, _c, _d = _eval(HA, pts[i, 0], wa)
-                x2, y2, _a, _b, _c, _d = _eval(HA, pts[j, 0], wa)
-                x3, y3, _a, _b, _c, _d = _eval(HB, pts[i, 1], wb)
-                x4, y4, _a, _b, _c, _d = _eval(HB, pts[j, 1], wb)
-                same = math.hypot(x - x2, y - y2) <= tl and math.hypot(x3 - x4, y3 - y4) <= tl
+                # one parameter shared: the same point only if the curve is point-like between
+                same = True
+                x0, y0, _a, _b, _c, _d = _eval(HA, pts[i, 0], wa)
+                x1, y1, _a, _b, _c, _d = _eval(HB, pts[i, 1], wb)
+                for q in range(5):
+                    f = q / 4.0
+                    x, y, _a, _b, _c, _d = _eval(HA, pts[i, 0] + f * (pts[j, 0] - pts[i, 0]), wa)
+                    x2, y2, _a, _b, _c, _d = _eval(HB, pts[i, 1] + f * (pts[j, 1] - pts[i, 1]), wb)
+                    if math.hypot(x - x0, y - y0) > tl or math.hypot(x2 - x1, y2 - y1) > tl:
+                        same = False
+                        break
             elif dt <= 1e-3 and du <= 1e-3 and (
                     pts[i, 3] == KIND_TANGENT or pts[j, 3] == KIND_TANGENT
                     or pts[i, 4] == 2.0 or pts[j, 4] == 2.0):
@@ -1343,7 +1352,7 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
     return res, nres
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def intersect_batch_kernel(P, W, offsets, pairs, tol, budget):  # type: ignore[no-untyped-def]
     """Intersect many pairs in one call.
 
@@ -1367,7 +1376,7 @@ def intersect_batch_kernel(P, W, offsets, pairs, tol, budget):  # type: ignore[n
 # --------------------------------------------------------------------------- lines
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def line_roots_kernel(e, W, maxdepth):  # type: ignore[no-untyped-def]
     """Roots in ``[0, 1]`` of the Bernstein polynomial with coefficients ``e``.
 
@@ -1465,7 +1474,7 @@ def line_roots_kernel(e, W, maxdepth):  # type: ignore[no-untyped-def]
     return res[:nr]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _grow1(arr, n):  # type: ignore[no-untyped-def]
     if n <= arr.shape[0]:
         return arr
