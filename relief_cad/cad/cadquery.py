@@ -168,6 +168,7 @@ def register(name: str = "intersection_points") -> None:
     >>> cq.Workplane("XY").moveTo(-2, 0).lineTo(2, 0).intersection_points(
     ...     cq.Workplane("XY").circle(1.0)).size()
     2
+    >>> del cq.Workplane.intersection_points  # undo the opt-in
     """
     existing = getattr(_cq.Workplane, name, None)
     if existing is not None and not getattr(existing, "_relief_cad_plugin", False):
