@@ -181,6 +181,32 @@ class _EdgeData:
     poles: np.ndarray  # (m, 3) poles of the exact B-spline form, located
 
 
+def _fast_hull(curve: Any, first: float, last: float) -> np.ndarray | None:
+    """Points whose hull holds the curve and whose plane is the curve's, without conversion.
+
+    Lines: the two ends; circles and ellipses: the corners of the axis-aligned square/rectangle
+    around them in their plane; Bézier and B-spline curves: their poles (of the whole curve, a
+    superset for a trimmed edge). ``None`` for other types (converted by OCCT instead).
+    """
+    from OCP.Geom import Geom_BezierCurve, Geom_BSplineCurve, Geom_Circle, Geom_Ellipse, Geom_Line
+
+    def xyz(p: Any) -> list[float]:
+        return [p.X(), p.Y(), p.Z()]
+
+    if isinstance(curve, Geom_Line):
+        return np.array([xyz(curve.Value(first)), xyz(curve.Value(last))])
+    if isinstance(curve, (Geom_BezierCurve, Geom_BSplineCurve)):
+        return np.array([xyz(curve.Pole(i)) for i in range(1, curve.NbPoles() + 1)])
+    if isinstance(curve, (Geom_Circle, Geom_Ellipse)):
+        ax = curve.Position()
+        c = np.array(xyz(ax.Location()))
+        x, y = np.array(xyz(ax.XDirection())), np.array(xyz(ax.YDirection()))
+        ra = curve.Radius() if isinstance(curve, Geom_Circle) else curve.MajorRadius()
+        rb = curve.Radius() if isinstance(curve, Geom_Circle) else curve.MinorRadius()
+        return np.array([c + sx * ra * x + sy * rb * y for sx in (-1, 1) for sy in (-1, 1)])
+    return None
+
+
 def _edge_data(edge: Any) -> _EdgeData:
     from OCP.BRep import BRep_Tool
     from OCP.Geom import Geom_TrimmedCurve
@@ -193,8 +219,10 @@ def _edge_data(edge: Any) -> _EdgeData:
     if not (math.isfinite(first) and math.isfinite(last)) or last <= first:
         raise ShapeError(f"expected a bounded edge parameter range, received ({first}, {last})")
     try:
-        bs = GeomConvert.CurveToBSplineCurve_s(Geom_TrimmedCurve(curve, first, last))
-        poles = np.array([[p.X(), p.Y(), p.Z()] for p in (bs.Pole(i) for i in range(1, bs.NbPoles() + 1))])
+        poles = _fast_hull(curve, first, last)
+        if poles is None:
+            bs = GeomConvert.CurveToBSplineCurve_s(Geom_TrimmedCurve(curve, first, last))
+            poles = np.array([[p.X(), p.Y(), p.Z()] for p in (bs.Pole(i) for i in range(1, bs.NbPoles() + 1))])
     except Exception:  # noqa: BLE001 - offset and other curves: sample instead
         ts = np.linspace(first, last, 65)
         poles = np.array([[p.X(), p.Y(), p.Z()] for p in (curve.Value(float(t)) for t in ts)])
