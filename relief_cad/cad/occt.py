@@ -222,7 +222,8 @@ def _edge_data(edge: Any) -> _EdgeData:
         poles = _fast_hull(curve, first, last)
         if poles is None:
             bs = GeomConvert.CurveToBSplineCurve_s(Geom_TrimmedCurve(curve, first, last))
-            poles = np.array([[p.X(), p.Y(), p.Z()] for p in (bs.Pole(i) for i in range(1, bs.NbPoles() + 1))])
+            pts = (bs.Pole(i) for i in range(1, bs.NbPoles() + 1))
+            poles = np.array([[p.X(), p.Y(), p.Z()] for p in pts])
     except Exception:  # noqa: BLE001 - offset and other curves: sample instead
         ts = np.linspace(first, last, 65)
         poles = np.array([[p.X(), p.Y(), p.Z()] for p in (curve.Value(float(t)) for t in ts)])
