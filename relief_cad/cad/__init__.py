@@ -20,7 +20,7 @@ with the install hint ``pip install "relief-cad[cad]"``.
 
 from __future__ import annotations
 
-from .api import intersect, intersections, segments, split
+from .api import intersect, intersections, planar_curves, segments, split
 from .ocp import Segment, edges_of
 from .results import EdgeIntersection, EdgeOverlap, EdgeResult
 
@@ -32,6 +32,7 @@ __all__ = [
     "edges_of",
     "intersect",
     "intersections",
+    "planar_curves",
     "segments",
     "split",
 ]

@@ -52,7 +52,7 @@ except ImportError as exc:  # pragma: no cover - ocp above raises first
         'relief_cad.cad needs OCP (cadquery-ocp); install it with: pip install "relief-cad[cad]"'
     ) from exc
 
-__all__ = ["intersect", "intersections", "segments", "split", "flavour_of"]
+__all__ = ["flavour_of", "intersect", "intersections", "planar_curves", "segments", "split"]
 
 _PLANE_FRACTION = 1e-3  # control points within tol * this of a plane count as coplanar
 _MEANINGFUL_FRACTION = 1e-3  # an OCCT tolerance above this fraction of the size is not used
@@ -84,6 +84,56 @@ def segments(edge: Any, *, approximate: bool = True) -> list[ocp.Segment]:
     [(2, 1.570796), (2, 3.141593), (2, 4.712389), (2, 6.283185)]
     """
     return ocp.edge_segments(edge, approximate=approximate)
+
+
+def planar_curves(
+    segs: list[ocp.Segment], *, tol: float | None = None
+) -> tuple[np.ndarray, list[RationalBezier]]:
+    """Map space segments lying in one plane to planar curves (dim 2) in a frame of that plane.
+
+    Parameters
+    ----------
+    segs : list of Segment
+        Segments (of one or several edges), e.g. from :func:`segments`.
+    tol : float, optional
+        How far (model units) a control point may lie off the plane; default
+        ``1e-3`` of :func:`relief_cad.tolerances.default_tolerance` of the points.
+
+    Returns
+    -------
+    frame : ndarray, shape (2, 4)
+        The affine isometry ``(x, y, z, 1) -> (u, v)`` used (see
+        :func:`relief_cad.cad.ocp.planar_frame`): parameters and distances are kept,
+        so ``edge_param`` of each segment applies to its planar curve unchanged.
+    curves : list of RationalBezier
+        One planar curve per segment.
+
+    Raises
+    ------
+    InvalidInputError
+        If the control points are not coplanar within ``tol``.
+
+    Examples
+    --------
+    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+    >>> from OCP.gp import gp_Pnt
+    >>> edge = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 5), gp_Pnt(3, 4, 5)).Edge()
+    >>> frame, [line] = planar_curves(segments(edge))
+    >>> line.dim, line.control_points.tolist()
+    (2, [[0.0, 0.0], [3.0, 4.0]])
+    """
+    pts = np.vstack([s.control_points for s in segs])
+    limit = default_tolerance(pts) * _PLANE_FRACTION if tol is None else _check_tol(tol)
+    if float(pts[:, 2].max() - pts[:, 2].min()) <= limit:
+        frame = _XY_FRAME
+    else:
+        found = ocp.planar_frame(pts, limit)
+        if found is None:
+            raise InvalidInputError(
+                f"expected segments whose control points lie in one plane (within {limit:.3g}); they do not"
+            )
+        frame = found
+    return frame.copy(), [_to_plane(s, frame) for s in segs]
 
 
 # --------------------------------------------------------------------------- flavours

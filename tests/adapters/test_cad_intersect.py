@@ -475,3 +475,21 @@ def test_missing_cad_package_gives_install_hint(blocked, module):
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert 'pip install "relief-cad[cad]"' in out
+
+
+def test_planar_curves_keep_parameters_and_distances():
+    ax = TILTED
+    edges = [circle(ax, 2.0), seg(ax, (-3, 1), (3, 1.5)), located(circle(XY, 1.0))]
+    segs = api.segments(edges[0]) + api.segments(edges[1])
+    frame, curves = api.planar_curves(segs)
+    assert frame.shape == (2, 4) and all(c.dim == 2 for c in curves)
+    s = np.linspace(0, 1, 7)
+    for sg, c in zip(segs, curves, strict=True):
+        p3 = sg.curve.evaluate(s)
+        p2 = c.evaluate(s)
+        np.testing.assert_allclose(p2, p3 @ frame[:, :3].T + frame[:, 3], atol=1e-12)
+        d3 = np.linalg.norm(np.diff(p3, axis=0), axis=1)
+        d2 = np.linalg.norm(np.diff(p2, axis=0), axis=1)
+        np.testing.assert_allclose(d2, d3, rtol=1e-12)
+    with pytest.raises(InvalidInputError, match="one plane"):
+        api.planar_curves(api.segments(edges[0]) + api.segments(edges[2]))
