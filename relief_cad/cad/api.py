@@ -200,7 +200,8 @@ class _EdgeInfo:
     approximate: bool
     first: float
     last: float
-    curves2d: list[RationalBezier] | None = None
+    frame: np.ndarray | None = None  # the common 2D frame of all edges, when there is one
+    _curves2d: dict[int, RationalBezier] | None = None
     _vertices: tuple[Any, Any] | None = None
 
     @property
@@ -296,7 +297,18 @@ def _to_plane(segment: ocp.Segment, frame: np.ndarray) -> RationalBezier:
 
 def _set_plane(infos: list[_EdgeInfo], frame: np.ndarray | None) -> None:
     for e in infos:
-        e.curves2d = None if frame is None else [_to_plane(s, frame) for s in e.segs]
+        e.frame = frame
+        e._curves2d = {}
+
+
+def _curve2d(e: _EdgeInfo, i: int) -> RationalBezier:
+    """Segment ``i`` of an edge in the common frame (built on first use)."""
+    cache = e._curves2d
+    if cache is None or e.frame is None:
+        raise InvalidInputError("internal: no common frame set")  # pragma: no cover
+    if i not in cache:
+        cache[i] = _to_plane(e.segs[i], e.frame)
+    return cache[i]
 
 
 # --------------------------------------------------------------------------- the core loop
@@ -355,8 +367,8 @@ def _pair_jobs(ea: _EdgeInfo, eb: _EdgeInfo, same: bool, tol: float, planar: boo
                 continue
             sb = eb.segs[j]
             if planar:
-                ca = ea.curves2d[i]  # type: ignore[index]
-                cb = eb.curves2d[j]  # type: ignore[index]
+                ca = _curve2d(ea, i)
+                cb = _curve2d(eb, j)
             elif frame is not None:
                 ca, cb = _to_plane(sa, frame), _to_plane(sb, frame)
             else:
