@@ -896,22 +896,26 @@ def _where(r: EdgeResult) -> str:
     return f"{r.index_a}/{r.index_b}: t=[{r.t[0]:.6g},{r.t[1]:.6g}] u=[{r.u[0]:.6g},{r.u[1]:.6g}]"
 
 
-def _edge_polyline(edge: Any, n: int = 200) -> np.ndarray:
-    from OCP.BRepAdaptor import BRepAdaptor_Curve
-
-    c = BRepAdaptor_Curve(getattr(edge, "wrapped", edge))
-    ts = np.linspace(c.FirstParameter(), c.LastParameter(), n)
-    out: np.ndarray = np.array([[p.X(), p.Y(), p.Z()] for p in (c.Value(float(t)) for t in ts)])
-    return out
-
-
 def _edge_range_polyline(edge: Any, t0: float, t1: float, n: int = 60) -> np.ndarray:
-    from OCP.BRepAdaptor import BRepAdaptor_Curve
+    """Points of the edge on ``[t0, t1]`` from its exact data (24 digits).
 
-    c = BRepAdaptor_Curve(getattr(edge, "wrapped", edge))
-    ts = np.linspace(t0, t1, n)
-    out: np.ndarray = np.array([[p.X(), p.Y(), p.Z()] for p in (c.Value(float(t)) for t in ts)])
+    OCCT's own evaluation of a high-degree Bézier curve goes through a power-basis cache
+    and can be visibly wrong (spikes) on ill-conditioned curves; the exact data is not.
+    """
+    import mpmath
+
+    with mpmath.workdps(24):
+        c = ExactCurve(edge)
+        pts = [[float(x) for x in c.value(mpmath.mpf(float(t)))] for t in np.linspace(t0, t1, n)]
+    out: np.ndarray = np.array(pts)
     return out
+
+
+def _edge_polyline(edge: Any, n: int = 160) -> np.ndarray:
+    from OCP.BRep import BRep_Tool
+
+    first, last = BRep_Tool.Range_s(getattr(edge, "wrapped", edge))
+    return _edge_range_polyline(edge, first, last, n)
 
 
 def plot_pair_png(
