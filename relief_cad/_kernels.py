@@ -1333,16 +1333,16 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
                 on = True
         if on:
             continue
-        kind = pts[i, 3]
-        if kind < 0.0:
+        kf = pts[i, 3]
+        if kf < 0.0:
             sn = _angle_sin(HA, HB, t, u, wa, wb)
-            kind = float(KIND_TANGENT) if sn < 1e-7 else float(KIND_CROSSING)
+            kf = float(KIND_TANGENT) if sn < 1e-7 else float(KIND_CROSSING)
         ax, ay, _a, _b, _c, _d = _eval(HA, t, wa)
         bx, by, _a, _b, _c, _d = _eval(HB, u, wb)
         dist = math.hypot(ax - bx, ay - by) * inv
         px = 0.5 * (ax + bx) * inv + cx
         py = 0.5 * (ay + by) * inv + cy
-        res, nres = _add(res, nres, pair, kind, t, u, t, u, px, py, dist)
+        res, nres = _add(res, nres, pair, kf, t, u, t, u, px, py, dist)
     for k in range(nov):
         res, nres = _add(res, nres, pair, float(KIND_OVERLAP), ov[k, 0], ov[k, 2], ov[k, 1], ov[k, 3],
                          0.0, 0.0, 0.0)
@@ -1365,10 +1365,11 @@ def intersect_batch_kernel(P, W, offsets, pairs, tol, budget):  # type: ignore[n
     for k in range(pairs.shape[0]):
         ia = pairs[k, 0]
         ib = pairs[k, 1]
-        PA = P[offsets[ia]:offsets[ia + 1]]
-        WA = W[offsets[ia]:offsets[ia + 1]]
-        PB = P[offsets[ib]:offsets[ib + 1]]
-        WB = W[offsets[ib]:offsets[ib + 1]]
+        # contiguous copies: the pair kernel is compiled for C-contiguous arrays only
+        PA = np.ascontiguousarray(P[offsets[ia]:offsets[ia + 1]])
+        WA = np.ascontiguousarray(W[offsets[ia]:offsets[ia + 1]])
+        PB = np.ascontiguousarray(P[offsets[ib]:offsets[ib + 1]])
+        WB = np.ascontiguousarray(W[offsets[ib]:offsets[ib + 1]])
         res, nres = intersect_pair_kernel(PA, WA, PB, WB, tol[k], budget, k, res, nres)
     return res, nres
 

@@ -1,4 +1,4 @@
-"""Low-level ("hazmat") Bézier clipping functions, documented, no stability promise.
+r"""Low-level ("hazmat") Bézier clipping functions, documented, no stability promise.
 
 These are thin Python faces of the numba kernels in :mod:`relief_cad._kernels`
 that the planar intersector runs; they let you inspect one clipping step.
@@ -11,7 +11,7 @@ and weights ``w_j > 0`` the signed distance to the line is
 
 .. math::
 
-    d(s) = \\frac{\\sum_j w_j d_j B_j^m(s)}{\\sum_j w_j B_j^m(s)}, \\qquad d_j = n \\cdot P_j + c,
+    d(s) = \frac{\sum_j w_j d_j B_j^m(s)}{\sum_j w_j B_j^m(s)}, \qquad d_j = n \cdot P_j + c,
 
 so ``dmin <= d(s)`` is ``sum_j w_j (d_j - dmin) B_j(s) >= 0`` and ``d(s) <= dmax``
 is ``sum_j w_j (dmax - d_j) B_j(s) >= 0``: two *explicit* Bézier functions whose

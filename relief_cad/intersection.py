@@ -29,7 +29,8 @@ The planar solver (one numba kernel, :mod:`relief_cad._kernels`):
 from __future__ import annotations
 
 import math
-from typing import Any, Iterable, Literal, Sequence
+from collections.abc import Iterable, Sequence
+from typing import Any, Literal
 
 import numpy as np
 
@@ -67,7 +68,7 @@ DEFAULT_BUDGET: int = 20_000
 
 OnBudget = Literal["raise", "return"]
 
-_KINDS = {KIND_CROSSING: "crossing", KIND_TANGENT: "tangent"}
+_KINDS: dict[int, Literal["crossing", "tangent"]] = {KIND_CROSSING: "crossing", KIND_TANGENT: "tangent"}
 
 
 def _check_curve(c: Any, name: str) -> RationalBezier:

@@ -15,7 +15,8 @@ from __future__ import annotations
 import subprocess
 import sys
 import time
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 
@@ -49,8 +50,9 @@ def occt_curve(c: RationalBezier) -> Any:
     return Geom2dAdaptor_Curve(geom)
 
 
-def occt_intersect(ca: Any, cb: Any, tol: float = OCCT_TOL, min_samples: int | None = None
-                   ) -> list[tuple[float, float]]:
+def occt_intersect(
+    ca: Any, cb: Any, tol: float = OCCT_TOL, min_samples: int | None = None
+) -> list[tuple[float, float]]:
     """``(t, u)`` of every point OCCT's ``Geom2dInt_GInter`` finds (segments give their ends)."""
     from OCP.Geom2dInt import Geom2dInt_GInter
 
@@ -89,23 +91,28 @@ def _arc(cx: float, cy: float, r: float, a0: float, a1: float) -> RationalBezier
 def cases() -> dict[str, list[tuple[RationalBezier, RationalBezier]]]:
     """The benchmark cases: name -> list of pairs."""
     out: dict[str, list[tuple[RationalBezier, RationalBezier]]] = {}
-    out["cubic x1"] = [(RationalBezier([[0, 0], [1, 3], [2, -1], [3, 1]]),
-                        RationalBezier([[0, 1.5], [1, -2], [2, 3], [3, -0.5]]))]
-    # two cubics with 9 crossings (zig-zags)
-    out["cubic x9"] = [(RationalBezier([[0, 0], [1, 6], [2, -6], [3, 0]]),
-                        RationalBezier([[0.15, -0.1], [2.85, 6.2], [-0.85, -6.2], [2.2, 0.05]]))]
-    out["arcs x2"] = [(_arc(0, 0, 1, 0.2, 2.6), _arc(0.8, 0.3, 1.1, 0.6, 3.0))]
-    rng = np.random.default_rng(7)
+    out["cubic x1"] = [(RationalBezier([[0, 0], [1, 2], [2, 2], [3, 0]]),
+                        RationalBezier([[1.5, -0.5], [1.2, 0.5], [1.8, 1.5], [1.5, 2.5]]))]
+    # y = f(x) against x = f(y), f(x) = 1/2 + 25 (x - 0.15)(x - 0.5)(x - 0.85): nine crossings
+    f9 = [-1.09375, 4.135416666666667, -3.1354166666666665, 2.09375]
+    x3 = [0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0]
+    out["cubic x9"] = [(RationalBezier(np.column_stack([x3, f9])), RationalBezier(np.column_stack([f9, x3])))]
+    out["arcs x2"] = [(_arc(0, 0, 1, 0.2, 2.6), _arc(0.3, 1.3, 1, np.pi + 0.3, 2 * np.pi - 0.3))]
+    # graph of T_7(2x - 1) (Bernstein ordinates) against a straight degree-7 curve: seven crossings
+    t7 = [-1.0, 13.0, -47.666666666666664, 85.8, -85.8, 47.666666666666664, -13.0, 1.0]
     xs = np.linspace(0, 1, 8)
-    a7 = RationalBezier(np.column_stack([xs, [0, 1, -1, 1, -1, 1, -1, 0]]))
-    b7 = RationalBezier(np.column_stack([xs[::-1], [0.05, -0.9, 1.1, -0.8, 0.9, -1.0, 0.8, 0.1]]))
-    out["degree 7 x7"] = [(a7, b7)]
-    out["disjoint, boxes overlap"] = [(RationalBezier([[0, 0], [1, 2], [2, 2], [3, 0]]),
-                                       RationalBezier([[0.5, 0.2], [1.2, 1.2], [1.8, 1.2], [2.5, 0.2]]))]
-    out["near-tangent"] = [(RationalBezier([[0, 0], [1, 1], [2, 0]]),
-                            RationalBezier([[0, 0.5 - 1e-7], [2, 0.5 - 1e-7 + 1e-9]]))]
+    out["degree 7 x7"] = [(RationalBezier(np.column_stack([xs, t7])),
+                           RationalBezier(np.column_stack([xs, 0.05 + 0.1 * xs])))]
+    out["disjoint, boxes overlap"] = [
+        (
+            RationalBezier([[0, 0], [1, 2], [2, 2], [3, 0]]),
+            RationalBezier([[0.5, 0.2], [1.2, 1.2], [1.8, 1.2], [2.5, 0.2]]),
+        )
+    ]
+    out["near-tangent"] = [
+        (RationalBezier([[0, 0], [1, 1], [2, 0]]), RationalBezier([[0, 0.5 - 1e-7], [2, 0.5 - 1e-7 + 1e-9]]))
+    ]
     out["1000 random cubics"] = _random_cubic_pairs(1000)
-    _ = rng
     return out
 
 
@@ -143,11 +150,19 @@ def run(repeat: int = 5) -> dict[str, Any]:
         n_rel = sum(len(intersect(a, b)) for a, b in pairs)
         n_occ = sum(len(occt_intersect(ca, cb)) for ca, cb in occ)
         reps = repeat if len(pairs) > 10 else repeat * 50
-        t_rel = _time(lambda: [intersect(a, b) for a, b in pairs], reps) / len(pairs)
-        t_occ = _time(lambda: [occt_intersect(ca, cb) for ca, cb in occ], reps) / len(pairs)
-        rows.append({"case": name, "pairs": len(pairs), "us_relief": 1e6 * t_rel,
-                     "us_occt": 1e6 * t_occ, "ratio": t_rel / t_occ,
-                     "points_relief": n_rel, "points_occt": n_occ})
+        t_rel = _time(lambda ps=pairs: [intersect(a, b) for a, b in ps], reps) / len(pairs)
+        t_occ = _time(lambda oc=occ: [occt_intersect(ca, cb) for ca, cb in oc], reps) / len(pairs)
+        rows.append(
+            {
+                "case": name,
+                "pairs": len(pairs),
+                "us_relief": 1e6 * t_rel,
+                "us_occt": 1e6 * t_occ,
+                "ratio": t_rel / t_occ,
+                "points_relief": n_rel,
+                "points_occt": n_occ,
+            }
+        )
     batch = _random_cubic_pairs(10_000, seed=3)
     intersect_many(batch[:10])
     t_batch = _time(lambda: intersect_many(batch), max(1, repeat // 2))
@@ -158,10 +173,14 @@ def run(repeat: int = 5) -> dict[str, Any]:
 
 def _main() -> None:
     r = run()
-    print(f"{'case':28s} {'pairs':>6s} {'relief µs':>10s} {'OCCT µs':>10s} {'ratio':>7s} {'pts rc/occt':>12s}")
+    print(
+        f"{'case':28s} {'pairs':>6s} {'relief µs':>10s} {'OCCT µs':>10s} {'ratio':>7s} {'pts rc/occt':>12s}"
+    )
     for row in r["cases"]:
-        print(f"{row['case']:28s} {row['pairs']:6d} {row['us_relief']:10.2f} {row['us_occt']:10.2f} "
-              f"{row['ratio']:7.3f} {row['points_relief']:>6d}/{row['points_occt']:<6d}")
+        print(
+            f"{row['case']:28s} {row['pairs']:6d} {row['us_relief']:10.2f} {row['us_occt']:10.2f} "
+            f"{row['ratio']:7.3f} {row['points_relief']:>6d}/{row['points_occt']:<6d}"
+        )
     print(f"batch of 10,000 random cubic pairs: {r['batch_pairs_per_s']:,.0f} pairs/s")
     print(f"import: {r['import_s'] * 1e3:.0f} ms, first call (warm cache): {r['first_call_s'] * 1e3:.0f} ms")
 

@@ -158,16 +158,16 @@ def build() -> list[dict[str, Any]]:
         pb = rng.integers(0, 17, (4, 2)) / 16.0
         cases.append(_case("random cubic", f"cubic {k}", pa, None, pb, None,
                            curve_curve_truth(pa, None, pb, None)))
-    # nine crossings: y = f(x) against x = f(y) with a cubic f
-    x = np.linspace(0, 1, 4)
-    f = [sp.Rational(1, 2) + sp.Rational(6) * (sp.Rational(k, 3) - sp.Rational(1, 5)) * (sp.Rational(k, 3) - sp.Rational(1, 2))
-         * (sp.Rational(k, 3) - sp.Rational(4, 5)) for k in range(4)]
-    _ = f
-    fx = [sp.Rational(1, 2), sp.Rational(1, 1) * 4, sp.Rational(-3), sp.Rational(1, 2)]
+    # nine crossings: y = f(x) against x = f(y), f(x) = 1/2 + 25 (x - 3/20)(x - 1/2)(x - 17/20)
+    xx = sp.symbols("xx")
+    fx = _bernstein_of_power(sp.Poly(sp.Rational(1, 2) + 25 * (xx - sp.Rational(3, 20)) * (xx - sp.Rational(1, 2))
+                                     * (xx - sp.Rational(17, 20)), xx).all_coeffs()[::-1], 3)
+    x = np.arange(4) / 3.0
     pa = np.column_stack([x, [float(v) for v in fx]])
     pb = np.column_stack([[float(v) for v in fx], x])
-    cases.append(_case("random cubic", "nine crossings", pa, None, pb, None,
-                       curve_curve_truth(pa, None, pb, None)))
+    nine = curve_curve_truth(pa, None, pb, None)
+    assert len(nine) == 9, nine
+    cases.append(_case("random cubic", "nine crossings", pa, None, pb, None, nine))
     # rational pairs up to degree 4 (dyadic weights)
     for k in range(8):
         na = 2 + k % 3
@@ -207,7 +207,7 @@ def build() -> list[dict[str, Any]]:
                                curve_curve_truth(pa, None, line, None), tol=1e-10))
     # degree 10..15 pairs: exact degree elevation of a cubic pair (truth of the cubic pair
     # moved by the rounding of the elevated control points: compare at 1e-12)
-    for k, deg in enumerate((10, 15)):
+    for deg in (10, 15):
         pa = rng.integers(0, 17, (4, 2)) / 16.0
         pb = rng.integers(0, 17, (4, 2)) / 16.0
         truth = curve_curve_truth(pa, None, pb, None)
