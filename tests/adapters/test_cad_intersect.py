@@ -339,6 +339,15 @@ def test_cadquery_plugin_invoke_and_register():
     assert wp.size() == 2 and all(isinstance(v, cq.Vertex) for v in wp.vals())
     # the chain goes on: a circle at each point
     assert wp.circle(0.1).size() == 2
+    posts = (
+        cq.Workplane("XZ").rect(4, 2, forConstruction=True)
+        .invoke(rcq.intersection_points(cq.Workplane("XZ").circle(1.5)))
+        .circle(0.1).extrude(1)
+    )
+    assert posts.solids().size() == 4
+    centres = sorted(tuple(round(c, 9) for c in s.Center().toTuple()) for s in posts.solids().vals())
+    x = math.sqrt(1.5**2 - 1.0)
+    assert [c[0] for c in centres] == pytest.approx([-x, -x, x, x], abs=1e-6)
     assert not hasattr(cq.Workplane, "relief_points")
     rcq.register("relief_points")
     try:
