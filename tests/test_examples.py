@@ -440,3 +440,49 @@ def test_cadquery_notebook_executes(tmp_path: Path) -> None:
     # the current interpreter by jupyter_client), so this runs in a fresh venv with ipykernel installed.
     NotebookClient(nb, timeout=240, kernel_name="python3", resources={"metadata": {"path": str(tmp_path)}}).execute()
     _check_notebook_outputs(nb)
+
+
+_OVERLAP_ROW = re.compile(r"^\s*\d+ (\d+):line\s+(\d+):line\s+overlap\s+t=\[(\S+), (\S+)\] u=\[(\S+), (\S+)\]\s*$",
+                          re.MULTILINE)
+
+
+def test_step_intersections_overlapping_boxes(tmp_path: Path) -> None:
+    """Two 10-unit cubes, the second shifted by 5 along x: 4 overlapping edges and 16 edge contacts."""
+    import json
+
+    import build123d as bd
+
+    a = bd.Box(10, 10, 10, align=bd.Align.MIN)
+    b = bd.Pos(5, 0, 0) * bd.Box(10, 10, 10, align=bd.Align.MIN)
+    path_a, path_b = tmp_path / "box_a.step", tmp_path / "box_b.step"
+    bd.export_step(a, str(path_a))
+    bd.export_step(b, str(path_b))
+    out = tmp_path / "boxes"
+    stdout = _run("step_intersections.py", str(path_a), str(path_b), "--out", str(out))
+
+    from relief_cad.cad.occt import unique_edges
+
+    mod = _load("step_intersections.py")
+    edges_a, edges_b = unique_edges(mod.read_step(path_a)), unique_edges(mod.read_step(path_b))
+    # closed form: the 4 edges along x of box a run over x in [0, 10], those of box b over [5, 15];
+    # they coincide over x in [5, 10], i.e. t in [5, 10] on a's edge and u in [0, 5] on b's.
+    overlaps = _OVERLAP_ROW.findall(stdout)
+    assert len(overlaps) == 4
+    for ia, ib, t0, t1, u0, u1 in overlaps:
+        assert [float(t0), float(t1), float(u0), float(u1)] == pytest.approx([5, 10, 0, 5], abs=1e-9)
+        for t, u in ((float(t0), float(u0)), (float(t1), float(u1)), (7.5, 2.5)):
+            assert np.linalg.norm(_value(edges_a[int(ia)], t) - _value(edges_b[int(ib)], u)) < 1e-9
+    # the edges across x meet the other box's x edges at its corners x = 5 (b's) and x = 10 (a's), twice each
+    rows = _STEP_ROW.findall(stdout)
+    assert len(rows) == 16
+    corners = {(x, y, z) for x in (5.0, 10.0) for y in (0.0, 10.0) for z in (0.0, 10.0)}
+    seen: dict[tuple[float, float, float], int] = {}
+    for _i, ia, ib, kind, x, y, z, t, u in rows:
+        p = (float(x), float(y), float(z))
+        assert p in corners and kind == "crossing"
+        assert np.linalg.norm(_value(edges_a[int(ia)], float(t)) - p) < 1e-9
+        assert np.linalg.norm(_value(edges_b[int(ib)], float(u)) - p) < 1e-9
+        seen[p] = seen.get(p, 0) + 1
+    assert seen == {c: 2 for c in corners}
+    data = json.loads((out / "comparison.json").read_text(encoding="utf-8"))
+    assert data["score"]["agreed"] == 20 and data["disagreements"] == []
