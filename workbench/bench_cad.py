@@ -11,6 +11,8 @@ Same edges, one run. For each pair:
   returns nothing for crossing edges); its point count is the number of new vertices;
 * ``speedup_find``: ``b3d_find_us / relief_us``.
 
+Times are the best of 5 batches (``timeit`` style), so they resist other load on the machine.
+
 Conversion rows: ``relief_cad.cad.segments`` alone, µs per edge, for a cubic Bézier, a
 single-span cubic B-spline, a 70° arc, a full circle and a 3-span interpolated spline.
 
@@ -26,17 +28,22 @@ from typing import Any
 __all__ = ["run", "pairs", "conversion_edges"]
 
 
-def _time(f: Callable[[], Any], repeat: int, budget_s: float = 0.4) -> float:
-    """Best-of style mean: µs per call over ``repeat`` calls (fewer if the budget runs out)."""
-    f()  # warm up (numba compilation, OCCT caches)
-    n = 0
+def _time(f: Callable[[], Any], repeat: int, budget_s: float = 0.5) -> float:
+    """µs per call: the best of 5 batches of ``repeat // 5`` calls (``timeit``-style, robust to load).
+
+    Fewer calls per batch when a single call is slow enough to exceed ``budget_s`` overall.
+    """
     t0 = time.perf_counter()
-    while n < repeat:
-        f()
-        n += 1
-        if time.perf_counter() - t0 > budget_s:
-            break
-    return (time.perf_counter() - t0) / n * 1e6
+    f()  # warm up (numba compilation, OCCT caches)
+    one = time.perf_counter() - t0
+    number = max(1, min(repeat // 5, int(budget_s / 5 / max(one, 1e-9))))
+    best = float("inf")
+    for _ in range(5):
+        t0 = time.perf_counter()
+        for _ in range(number):
+            f()
+        best = min(best, (time.perf_counter() - t0) / number)
+    return best * 1e6
 
 
 def _count_and_time(f: Callable[[], Any], count: Callable[[Any], int], repeat: int) -> tuple[Any, Any]:
