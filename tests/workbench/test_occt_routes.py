@@ -121,3 +121,12 @@ def test_build123d_and_cadquery_inputs_get_their_own_edges_back():
     assert sorted(r.point[0] for r in res) == pytest.approx([-math.sqrt(3), math.sqrt(3)], abs=1e-9)
     cq_res = occt_intersections(cq.Edge.makeCircle(2.0), cq.Edge.makeLine(cq.Vector(-3, 1, 0), cq.Vector(3, 1, 0)))
     assert len(cq_res) == 2 and isinstance(cq_res[0].edge_a, cq.Edge)
+
+
+def test_trimmed_arc_reports_parameters_inside_its_range():
+    ax = gp_Ax2(gp_Pnt(1, 1, 0), gp_Dir(0, 0, 1))
+    arc = BRepBuilderAPI_MakeEdge(gp_Circ(ax, 2.0), 0.25, math.pi / 2).Edge()  # trimmed, off the origin
+    chord = segment((-2, 2, 0), (4, 2, 0))  # y = 2: the circle at angles pi/6 and 5 pi/6
+    (hit,) = occt_intersections(arc, chord)
+    assert hit.t == pytest.approx(math.pi / 6, abs=1e-9) and hit.u == pytest.approx(3 + math.sqrt(3), abs=1e-9)
+    assert math.dist(value(arc, hit.t), (1 + math.sqrt(3), 2.0, 0.0)) < 1e-9
