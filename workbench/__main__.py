@@ -52,6 +52,12 @@ def _cmd_compare(args: argparse.Namespace) -> int:
     from .run import format_summary, run_compare
 
     corpus = args.corpus or bundled_corpus_path()
+    if not Path(corpus).is_file():
+        print(
+            f"error: expected a corpus file (python -m workbench corpus OUT makes one), received {corpus}",
+            file=sys.stderr,
+        )
+        return 2
     t0 = time.perf_counter()
     summary = run_compare(
         corpus,
