@@ -218,11 +218,7 @@ def _prepare(shape: Any) -> list[_EdgeInfo]:
         if BRep_Tool.Degenerated_s(edge):
             continue
         segs = ocp.edge_segments(edge)
-        boxes = np.empty((len(segs), 2, 3))
-        for k, s in enumerate(segs):
-            pts = s.control_points
-            boxes[k, 0] = pts.min(axis=0)
-            boxes[k, 1] = pts.max(axis=0)
+        boxes = _boxes(segs)
         one = len(segs) == 1
         infos.append(
             _EdgeInfo(
@@ -239,6 +235,19 @@ def _prepare(shape: Any) -> list[_EdgeInfo]:
             )
         )
     return infos
+
+
+def _boxes(segs: list[ocp.Segment]) -> np.ndarray:
+    """Boxes ``(nseg, 2, 3)`` (lo, hi) of the segments' control points (one reduction when possible)."""
+    if len(segs) == 1 or all(len(s.homogeneous) == len(segs[0].homogeneous) for s in segs):
+        h = np.stack([s.homogeneous for s in segs])
+        pts = h[..., :3] / h[..., 3:]
+        return np.stack([pts.min(axis=1), pts.max(axis=1)], axis=1)
+    boxes = np.empty((len(segs), 2, 3))
+    for k, s in enumerate(segs):
+        boxes[k, 0] = s.control_points.min(axis=0)
+        boxes[k, 1] = s.control_points.max(axis=0)
+    return boxes
 
 
 def _all_points(infos: list[_EdgeInfo]) -> np.ndarray:
@@ -357,23 +366,28 @@ def _pair_jobs(ea: _EdgeInfo, eb: _EdgeInfo, same: bool, tol: float, planar: boo
         )
     jobs: list[_Job] = []
     boxes_a, boxes_b = ea.boxes, eb.boxes
-    for i, sa in enumerate(ea.segs):
-        lo_a = boxes_a[i, 0] - tol
-        hi_a = boxes_a[i, 1] + tol
-        hit = np.all((boxes_b[:, 0] <= hi_a) & (boxes_b[:, 1] >= lo_a), axis=1)
-        for jj in np.nonzero(hit)[0]:
-            j = int(jj)
-            if same and j < i:
-                continue
-            sb = eb.segs[j]
-            if planar:
-                ca = _curve2d(ea, i)
-                cb = _curve2d(eb, j)
-            elif frame is not None:
-                ca, cb = _to_plane(sa, frame), _to_plane(sb, frame)
-            else:
-                ca, cb = sa.curve, sb.curve
-            jobs.append(_Job(ea, eb, i, j, ca, None if (same and i == j) else cb))
+    if len(boxes_a) == 1 and len(boxes_b) == 1:
+        candidates: Any = [(0, 0)]  # the edge boxes already overlap
+    else:
+        close = np.all(
+            (boxes_a[:, None, 0, :] - tol <= boxes_b[None, :, 1, :])
+            & (boxes_b[None, :, 0, :] <= boxes_a[:, None, 1, :] + tol),
+            axis=2,
+        )
+        candidates = zip(*np.nonzero(close), strict=True)
+    for ii, jj in candidates:
+        i, j = int(ii), int(jj)
+        if same and j < i:
+            continue
+        sa, sb = ea.segs[i], eb.segs[j]
+        if planar:
+            ca = _curve2d(ea, i)
+            cb = _curve2d(eb, j)
+        elif frame is not None:
+            ca, cb = _to_plane(sa, frame), _to_plane(sb, frame)
+        else:
+            ca, cb = sa.curve, sb.curve
+        jobs.append(_Job(ea, eb, i, j, ca, None if (same and i == j) else cb))
     return jobs
 
 
