@@ -37,6 +37,7 @@ __all__ = [
     "fat_line_kernel",
     "hull_range_kernel",
     "intersect_batch_kernel",
+    "intersect_one_kernel",
     "intersect_pair_kernel",
     "line_roots_kernel",
 ]
@@ -107,13 +108,15 @@ def _cartesian(S, P, W):  # type: ignore[no-untyped-def]
     xhi = -math.inf
     ylo = math.inf
     yhi = -math.inf
+    iwmax = 1.0 / wmax
     for i in range(m):
         w = S[i, 2]
-        x = S[i, 0] / w
-        y = S[i, 1] / w
+        iw = 1.0 / w
+        x = S[i, 0] * iw
+        y = S[i, 1] * iw
         P[i, 0] = x
         P[i, 1] = y
-        W[i] = w / wmax
+        W[i] = w * iwmax
         xlo = min(xlo, x)
         xhi = max(xhi, x)
         ylo = min(ylo, y)
@@ -238,25 +241,32 @@ def hull_range_kernel(e):  # type: ignore[no-untyped-def]
     Returns ``(lo, hi)``; ``lo > hi`` means the hull lies entirely below zero.
     """
     m = e.shape[0] - 1
+    h = 1.0 / m
     lo = math.inf
     hi = -math.inf
     for j in range(m + 1):
         if e[j] >= 0.0:
-            sj = j / m
+            sj = j * h
             lo = min(lo, sj)
             hi = max(hi, sj)
     if lo == 0.0 and hi == 1.0:
         return lo, hi
+    # hull edges crossing zero: segments from a point below to a point above
     for i in range(m + 1):
         ei = e[i]
-        for j in range(i + 1, m + 1):
+        if ei >= 0.0:
+            continue
+        si = i * h
+        for j in range(m + 1):
             ej = e[j]
-            if (ei < 0.0 and ej > 0.0) or (ei > 0.0 and ej < 0.0):
-                si = i / m
-                sj = j / m
-                s = si + (sj - si) * (ei / (ei - ej))
-                lo = min(lo, s)
-                hi = max(hi, s)
+            if ej <= 0.0:
+                continue
+            sj = j * h
+            if lo <= min(si, sj) and max(si, sj) <= hi:
+                continue  # this crossing cannot widen [lo, hi]
+            s = si + (sj - si) * (ei / (ei - ej))
+            lo = min(lo, s)
+            hi = max(hi, s)
     if lo < 0.0:
         lo = 0.0
     if hi > 1.0:
@@ -856,11 +866,28 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
     mb = PB.shape[0]
     na = ma - 1
     nb = mb - 1
+    if not tol > 0.0:
+        tol = _default_tol(PA, PB)
+    # disjoint bounding boxes (widened by tol): nothing to do
+    xla = xha = PA[0, 0]
+    yla = yha = PA[0, 1]
+    for i in range(1, ma):
+        xla = min(xla, PA[i, 0])
+        xha = max(xha, PA[i, 0])
+        yla = min(yla, PA[i, 1])
+        yha = max(yha, PA[i, 1])
+    xlb = xhb = PB[0, 0]
+    ylb = yhb = PB[0, 1]
+    for i in range(1, mb):
+        xlb = min(xlb, PB[i, 0])
+        xhb = max(xhb, PB[i, 0])
+        ylb = min(ylb, PB[i, 1])
+        yhb = max(yhb, PB[i, 1])
+    if xla > xhb + tol or xlb > xha + tol or yla > yhb + tol or ylb > yha + tol:
+        return res, nres
     cx, cy, scale = _frame(PA, PB)
     HA = _homog(PA, WA, cx, cy, scale)
     HB = _homog(PB, WB, cx, cy, scale)
-    if not tol > 0.0:
-        tol = _default_tol(PA, PB)
     tl = tol * scale
     if not tl > 0.0:
         tl = 1e-300
@@ -1358,7 +1385,7 @@ def intersect_batch_kernel(P, W, offsets, pairs, tol, budget):  # type: ignore[n
 
     ``P`` (N, 2) and ``W`` (N,) hold every curve's control points back to back;
     curve ``k`` is rows ``offsets[k]:offsets[k + 1]``. ``pairs`` (p, 2) indexes
-    curves; ``tol`` (p,) holds each pair's tolerance. Returns ``(res, nres)``.
+    curves; ``tol`` (p,) holds each pair's tolerance. Returns the result rows.
     """
     res = np.empty((max(16, 2 * pairs.shape[0]), RES_COLS))
     nres = 0
@@ -1371,7 +1398,15 @@ def intersect_batch_kernel(P, W, offsets, pairs, tol, budget):  # type: ignore[n
         PB = np.ascontiguousarray(P[offsets[ib]:offsets[ib + 1]])
         WB = np.ascontiguousarray(W[offsets[ib]:offsets[ib + 1]])
         res, nres = intersect_pair_kernel(PA, WA, PB, WB, tol[k], budget, k, res, nres)
-    return res, nres
+    return res[:nres]
+
+
+@njit(cache=True, error_model="numpy")
+def intersect_one_kernel(PA, WA, PB, WB, tol, budget):  # type: ignore[no-untyped-def]
+    """One pair: the result rows (a single array return is cheaper to box than a tuple)."""
+    res = np.empty((8, RES_COLS))
+    res, nres = intersect_pair_kernel(PA, WA, PB, WB, tol, budget, 0, res, 0)
+    return res[:nres]
 
 
 # --------------------------------------------------------------------------- lines

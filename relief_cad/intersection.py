@@ -39,9 +39,8 @@ from ._kernels import (
     KIND_OVERLAP,
     KIND_TANGENT,
     KIND_UNRESOLVED,
-    RES_COLS,
     intersect_batch_kernel,
-    intersect_pair_kernel,
+    intersect_one_kernel,
 )
 from ._types import FloatArray
 from .curves import RationalBezier
@@ -101,19 +100,32 @@ def _check_on_budget(on_budget: Any) -> None:
         raise InvalidInputError(f"on_budget should be 'raise' or 'return', not {on_budget!r}")
 
 
+def _point(t: float, u: float, point: FloatArray, kind: Literal["crossing", "tangent"],
+           distance: float) -> Intersection:
+    """An :class:`Intersection` without the frozen-dataclass ``__init__`` cost (hot path)."""
+    obj = object.__new__(Intersection)
+    obj.__dict__.update(t=t, u=u, point=point, kind=kind, distance=distance)
+    return obj
+
+
 def _rows_to_list(rows: FloatArray) -> IntersectionList:
     """Build the sorted :class:`IntersectionList` of kernel result rows."""
     items: list[Result] = []
     boxes: list[ParameterBox] = []
-    for r in rows.tolist():
+    if rows.shape[0] == 0:
+        return IntersectionList(items, boxes)
+    points = rows[:, 6:8].copy()
+    points.flags.writeable = False
+    for i, r in enumerate(rows.tolist()):
         kind = int(r[1])
         if kind == KIND_OVERLAP:
             items.append(Overlap(t=(r[2], r[4]), u=(r[3], r[5])))
         elif kind == KIND_UNRESOLVED:
             boxes.append(ParameterBox(r[2], r[4], r[3], r[5]))
         else:
-            items.append(Intersection(r[2], r[3], np.array((r[6], r[7])), _KINDS[kind], r[8]))
-    items.sort(key=lambda x: x.t[0] if isinstance(x, Overlap) else x.t)
+            items.append(_point(r[2], r[3], points[i], _KINDS[kind], r[8]))
+    if len(items) > 1:
+        items.sort(key=lambda x: x.t[0] if isinstance(x, Overlap) else x.t)
     return IntersectionList(items, boxes)
 
 
@@ -137,11 +149,12 @@ def _ro(arr: FloatArray) -> FloatArray:
 
 
 def _planar(pa: FloatArray, wa: FloatArray, pb: FloatArray, wb: FloatArray, tol: float,
-            budget: int) -> IntersectionList:
-    pa, wa, pb, wb = _ro(pa), _ro(wa), _ro(pb), _ro(wb)
-    res = np.empty((16, RES_COLS))
-    res, n = intersect_pair_kernel(pa, wa, pb, wb, tol, budget, 0, res, 0)
-    return _rows_to_list(res[:n])
+            budget: int, trusted: bool = False) -> IntersectionList:
+    """Run the pair kernel; ``trusted`` arrays (a RationalBezier's) are already read-only C float64."""
+    if not trusted or not (pa.flags.c_contiguous and pb.flags.c_contiguous
+                           and wa.flags.c_contiguous and wb.flags.c_contiguous):
+        pa, wa, pb, wb = _ro(pa), _ro(wa), _ro(pb), _ro(wb)
+    return _rows_to_list(intersect_one_kernel(pa, wa, pb, wb, tol, budget))
 
 
 def _split_homogeneous(h: FloatArray, name: str) -> tuple[FloatArray, FloatArray]:
@@ -306,8 +319,8 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
         return _finish(_self_planar(a.control_points, a.weights, ftol, nbudget), on_budget)
     # tol <= 0 asks the kernel for default_tolerance(a.control_points, b.control_points)
     ftol = -1.0 if tol is None else _check_tol(tol)
-    return _finish(_planar(a.control_points, a.weights, b.control_points, b.weights, ftol, nbudget),
-                   on_budget)
+    return _finish(_planar(a.control_points, a.weights, b.control_points, b.weights, ftol, nbudget,
+                           trusted=True), on_budget)
 
 
 def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
@@ -438,8 +451,7 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
         tols = np.full(len(planar), -1.0 if ftol is None else ftol)
         pts.flags.writeable = False
         wts.flags.writeable = False
-        res, n = intersect_batch_kernel(pts, wts, offsets, idx, tols, nbudget)
-        res = res[:n]
+        res = intersect_batch_kernel(pts, wts, offsets, idx, tols, nbudget)
         order = np.argsort(res[:, 0], kind="stable")
         res = res[order]
         bounds = np.searchsorted(res[:, 0], np.arange(len(planar) + 1))
