@@ -522,7 +522,7 @@ def _shared_vertex_contact(r: _Raw, tol: float) -> bool:
     return False
 
 
-def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float]:
+def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float, list[_EdgeInfo]]:
     flavour = flavour_of(a)
     infos_a = _prepare(a)
     if b is None:
@@ -560,7 +560,7 @@ def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float]:
         pair = per_pair.get((id(ea), id(eb)))
         if pair:
             raws.extend(_clean_pair(pair, same, b is None, ftol))
-    return flavour, raws, ftol
+    return flavour, raws, ftol, infos_a
 
 
 # --------------------------------------------------------------------------- public API
@@ -604,7 +604,7 @@ def intersections(a: Any, b: Any = None, *, tol: float | None = None) -> list[Ed
     >>> intersections(square)
     []
     """
-    flavour, raws, _ = _run(a, b, tol)
+    flavour, raws, _, _ = _run(a, b, tol)
     out: list[EdgeResult] = []
     natives: dict[int, Any] = {}
 
@@ -657,7 +657,7 @@ def intersect(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
     >>> intersect(a, c)
     []
     """
-    flavour, raws, ftol = _run(a, b, tol)
+    flavour, raws, ftol, _ = _run(a, b, tol)
     points: list[tuple[float, float, float]] = []
     for r in sorted(raws, key=lambda r: (r.ea.index, r.eb.index, r.t if r.kind != "overlap" else r.t[0])):
         if r.kind == "overlap":
@@ -702,8 +702,7 @@ def split(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
     >>> [BRep_Tool.Range_s(e) for e in split(a, b)]
     [(0.0, 1.0), (1.0, 4.0)]
     """
-    flavour, raws, ftol = _run(a, b, tol)
-    infos = _prepare(a)
+    flavour, raws, ftol, infos = _run(a, b, tol)
     cuts: dict[int, list[float]] = {}
     for r in raws:
         params_a = list(r.t) if r.kind == "overlap" else [r.t]
