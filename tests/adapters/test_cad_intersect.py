@@ -502,3 +502,15 @@ def test_planar_curves_keep_parameters_and_distances():
         np.testing.assert_allclose(d2, d3, rtol=1e-12)
     with pytest.raises(InvalidInputError, match="one plane"):
         api.planar_curves(api.segments(edges[0]) + api.segments(edges[2]))
+
+
+def test_results_on_approximated_edges_are_flagged():
+    from OCP.Geom import Geom_Circle, Geom_OffsetCurve, Geom_TrimmedCurve
+
+    off = Geom_OffsetCurve(Geom_TrimmedCurve(Geom_Circle(XY, 2.0), 0.0, 3.0), 0.5, gp_Dir(0, 0, 1))
+    edge = BRepBuilderAPI_MakeEdge(off).Edge()
+    [hit] = api.intersections(edge, seg(XY, (0, 0), (0, 4)))
+    assert hit.approximate
+    # the offset of a radius-2 circle by 0.5 is a circle of radius 2.5 (outward or inward)
+    assert abs(hit.point[1]) == pytest.approx(2.5, abs=1e-6) or abs(hit.point[1]) == pytest.approx(1.5, abs=1e-6)
+    check_on_edges([hit], tol=1e-6)
