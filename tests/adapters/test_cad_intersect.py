@@ -514,3 +514,13 @@ def test_results_on_approximated_edges_are_flagged():
     # the offset of a radius-2 circle by 0.5 is a circle of radius 2.5 (outward or inward)
     assert abs(hit.point[1]) == pytest.approx(2.5, abs=1e-6) or abs(hit.point[1]) == pytest.approx(1.5, abs=1e-6)
     check_on_edges([hit], tol=1e-6)
+
+
+def test_circles_in_perpendicular_planes_meet_in_space():
+    c1 = circle(XY, 1.0)
+    c2 = BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(0.5, 0, 0), gp_Dir(0, 1, 0), gp_Dir(1, 0, 0)), 0.5)).Edge()
+    [hit] = api.intersections(located(c1), located(c2))
+    np.testing.assert_allclose(hit.point, value(located(c1), 0.0), atol=1e-9)
+    assert hit.t in (0.0, pytest.approx(0.0, abs=1e-9), pytest.approx(2 * math.pi, abs=1e-9))
+    check_on_edges([hit])
+    matches([hit], occt_intersections(located(c1), located(c2)))
