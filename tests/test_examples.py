@@ -63,7 +63,7 @@ def _value(edge, t: float) -> np.ndarray:
     return np.array([p.X(), p.Y(), p.Z()])
 
 
-def _roots_along(edge, f, n: int = 4000) -> list[np.ndarray]:
+def _roots_along(edge, f, n: int = 1500) -> list[np.ndarray]:
     """Points of ``edge`` where the implicit function ``f`` changes sign (OCCT evaluation, bisection)."""
     from OCP.BRepAdaptor import BRepAdaptor_Curve
 
