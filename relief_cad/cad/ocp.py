@@ -663,13 +663,15 @@ def _curve_segments(
 
 def _check_length(segs: list[Segment]) -> list[Segment]:
     """Refuse free-form edges whose control points all coincide (lines and conics cannot)."""
-    pts = np.vstack([s.control_points for s in segs]) if len(segs) > 1 else segs[0].control_points
-    if not (pts != pts[0]).any():
-        raise DegenerateCurveError(
-            "expected an edge of non-zero length; received one whose every control point is "
-            f"{pts[0].tolist()}"
-        )
-    return segs
+    first = segs[0].homogeneous
+    p0 = first[0, :3] / first[0, 3]
+    for seg in segs:  # usually decided by the first segment
+        h = seg.homogeneous
+        if (h[:, :3] != h[:, 3:] * p0).any():
+            return segs
+    raise DegenerateCurveError(
+        f"expected an edge of non-zero length; received one whose every control point is {p0.tolist()}"
+    )
 
 
 def edge_value(edge: Any, t: float) -> tuple[float, float, float]:
