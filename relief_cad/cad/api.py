@@ -239,11 +239,18 @@ def _prepare(shape: Any) -> list[_EdgeInfo]:
 
 def _boxes(segs: list[ocp.Segment]) -> np.ndarray:
     """Boxes ``(nseg, 2, 3)`` (lo, hi) of the segments' control points (one reduction when possible)."""
-    if len(segs) == 1 or all(len(s.homogeneous) == len(segs[0].homogeneous) for s in segs):
-        h = np.stack([s.homogeneous for s in segs])
-        pts = h[..., :3] / h[..., 3:]
-        return np.stack([pts.min(axis=1), pts.max(axis=1)], axis=1)
     boxes = np.empty((len(segs), 2, 3))
+    if len(segs) == 1:
+        pts = segs[0].control_points
+        boxes[0, 0] = pts.min(axis=0)
+        boxes[0, 1] = pts.max(axis=0)
+        return boxes
+    if all(len(s.homogeneous) == len(segs[0].homogeneous) for s in segs):
+        h = np.array([s.homogeneous for s in segs])
+        pts = h[..., :3] / h[..., 3:]
+        boxes[:, 0] = pts.min(axis=1)
+        boxes[:, 1] = pts.max(axis=1)
+        return boxes
     for k, s in enumerate(segs):
         boxes[k, 0] = s.control_points.min(axis=0)
         boxes[k, 1] = s.control_points.max(axis=0)
@@ -261,8 +268,8 @@ def _joint_box(infos: list[_EdgeInfo]) -> np.ndarray:
     return np.array([np.min([e.lo for e in infos], axis=0), np.max([e.hi for e in infos], axis=0)])
 
 
-def _default_tol(infos: list[_EdgeInfo]) -> float:
-    box = _joint_box(infos)
+def _default_tol(infos: list[_EdgeInfo], box: np.ndarray | None = None) -> float:
+    box = _joint_box(infos) if box is None else box
     size = math.dist(box[0], box[1])
     occt = max(e.tolerance for e in infos)
     if math.isfinite(occt) and 0.0 < occt <= _MEANINGFUL_FRACTION * size:
@@ -271,9 +278,9 @@ def _default_tol(infos: list[_EdgeInfo]) -> float:
     return default_tolerance(box)
 
 
-def _common_frame(infos: list[_EdgeInfo], tol: float) -> np.ndarray | None:
+def _common_frame(infos: list[_EdgeInfo], tol: float, box: np.ndarray | None = None) -> np.ndarray | None:
     """A 2D frame of a plane holding every control point, or None (XY-parallel checked on boxes)."""
-    box = _joint_box(infos)
+    box = _joint_box(infos) if box is None else box
     if box[1, 2] - box[0, 2] <= tol * _PLANE_FRACTION:
         return _XY_FRAME
     return ocp.planar_frame(_all_points(infos), tol * _PLANE_FRACTION)
@@ -533,8 +540,9 @@ def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float, lis
         which = "a" if not infos_a else "b"
         raise InvalidInputError(f"expected shape {which} to have at least one edge with a curve; it has none")
     everyone = infos_a if b is None else infos_a + infos_b
-    ftol = _default_tol(everyone) if tol is None else _check_tol(tol)
-    frame = _common_frame(everyone, ftol)
+    box = _joint_box(everyone)
+    ftol = _default_tol(everyone, box) if tol is None else _check_tol(tol)
+    frame = _common_frame(everyone, ftol, box)
     _set_plane(everyone, frame)
     planar = frame is not None
     jobs: list[_Job] = []
