@@ -627,37 +627,37 @@ def _eval_dd(H, t, wk):  # type: ignore[no-untyped-def]
 
 @njit(cache=True, error_model="numpy")
 def _polish_dd(HA, HB, t, u, wa, wb, da, db, steps):  # type: ignore[no-untyped-def]
-    """A few Newton steps on ``a(t) - b(u)`` with a double-double residual."""
-    bt = t
-    bu = u
-    bres = math.inf
+    """Newton steps on ``a(t) - b(u)`` with a double-double residual.
+
+    Returns ``(t, u, certified)``: ``certified`` when the iteration reached a fixed
+    point in double precision parameters (last step below 4e-16), i.e. an exact
+    root lies within an ulp or two; a spurious root of a rounded double root
+    keeps moving and is not certified.
+    """
     for _ in range(steps):
         axh, axl, ayh, ayl = _eval_dd(HA, t, da)
         bxh, bxl, byh, byl = _eval_dd(HB, u, db)
-        fx, fxl = _dd_add(axh, axl, -bxh, -bxl)
-        fy, fyl = _dd_add(ayh, ayl, -byh, -byl)
-        res = math.hypot(fx, fy)
-        if res >= bres:
-            break
-        bres = res
-        bt = t
-        bu = u
-        if res == 0.0:
-            break
+        fx, _fxl = _dd_add(axh, axl, -bxh, -bxl)
+        fy, _fyl = _dd_add(ayh, ayl, -byh, -byl)
+        if fx == 0.0 and fy == 0.0:
+            return t, u, True
         _ax, _ay, adx, ady, _a2, _a3 = _eval(HA, t, wa)
         _bx, _by, bdx, bdy, _b2, _b3 = _eval(HB, u, wb)
         det = -adx * bdy + ady * bdx
         if det == 0.0:
-            break
+            return t, u, False
         dt = (-fx * (-bdy) + bdx * (-fy)) / det
         du = (adx * (-fy) - ady * (-fx)) / det
+        if abs(dt) > 0.25 or abs(du) > 0.25:
+            return t, u, False
         nt = min(1.0, max(0.0, t + dt))
         nu = min(1.0, max(0.0, u + du))
-        if nt == t and nu == u:
-            break
+        small = abs(dt) <= 4e-16 and abs(du) <= 4e-16
         t = nt
         u = nu
-    return bt, bu
+        if small:
+            return t, u, True
+    return t, u, False
 
 
 # --------------------------------------------------------------------------- pair solve
@@ -694,7 +694,7 @@ def _frame(PA, PB):  # type: ignore[no-untyped-def]
         big = max(big, abs(PB[i, 0] - cx), abs(PB[i, 1] - cy))
     scale = 1.0
     if big > 0.0:
-        e = math.frexp(big)[1]
+        e = max(math.frexp(big)[1], -1000)  # keep the scale finite for subnormal inputs
         scale = math.ldexp(1.0, -e)
     return cx, cy, scale
 
@@ -1214,8 +1214,13 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
                 _x, _y, adx, ady, _a2, _a3 = _eval(HA, t, wa)
                 _x, _y, bdx, bdy, _b2, _b3 = _eval(HB, u, wb)
                 sig = abs(adx * bdy - ady * bdx) / max(math.hypot(adx, ady), math.hypot(bdx, bdy), 1e-300)
+                cert = 0.0
                 if (na + nb) * _EPS > 1e-14 * sig:
-                    t, u = _polish_dd(HA, HB, t, u, wa, wb, da, db, 4)
+                    t2, u2, ok = _polish_dd(HA, HB, t, u, wa, wb, da, db, 10)
+                    if ok:
+                        t = t2
+                        u = u2
+                        cert = 1.0
                 dup = False
                 for k in range(nroots):
                     if abs(roots[k, 0] - t) <= 1e-11 and abs(roots[k, 1] - u) <= 1e-11:
@@ -1225,7 +1230,7 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
                     roots = _grow(roots, nroots + 1)
                     roots[nroots, 0] = t
                     roots[nroots, 1] = u
-                    roots[nroots, 2] = r
+                    roots[nroots, 2] = cert
                     nroots += 1
         if nroots == 0:
             t, u, d = _closest(HA, HB, bt, bu, wa, wb, 60)
@@ -1267,7 +1272,9 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
                     uq = min(1.0, max(0.0, uq - (fx * dx + fy * dy) / h))
                 x, y, _a, _b, _c, _d = _eval(HB, uq, wb)
                 dq = math.hypot(x - mx, y - my)
-                if dq <= 4.0 * rnd:
+                distinct = roots[j, 2] == 1.0 and roots[j + 1, 2] == 1.0 and (
+                    abs(roots[j + 1, 0] - roots[j, 0]) > 1e-13 or abs(roots[j + 1, 1] - roots[j, 1]) > 1e-13)
+                if dq <= 4.0 * rnd and not distinct:
                     j += 1
                 else:
                     break
@@ -1281,7 +1288,7 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
                 pts = _grow(pts, npts + 1)
                 pts[npts, 0] = roots[i, 0]
                 pts[npts, 1] = roots[i, 1]
-                pts[npts, 2] = roots[i, 2]
+                pts[npts, 2] = 0.0
                 pts[npts, 3] = float(kind)
                 pts[npts, 4] = 1.0
                 npts += 1

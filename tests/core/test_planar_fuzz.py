@@ -67,6 +67,10 @@ def curve_pair(draw: st.DrawFn, adversarial: bool = True) -> tuple[RationalBezie
     return a, b
 
 
+def _dump(a: RationalBezier, b: RationalBezier) -> str:
+    return repr([c.control_points.tolist() for c in (a, b)] + [c.weights.tolist() for c in (a, b)])
+
+
 def _run(a: RationalBezier, b: RationalBezier) -> IntersectionList:
     return intersect(a, b, budget=4000, on_budget="return")
 
@@ -133,7 +137,7 @@ def test_swap_swaps_parameters(pair: tuple[RationalBezier, RationalBezier]) -> N
     ab = _run(a, b)
     ba = _run(b, a)
     for r in _clean_crossings(a, b, ab):
-        assert _has(ba, r.u, r.t, _param_tol(a, b)), (r, list(ba))
+        assert _has(ba, r.u, r.t, _param_tol(a, b)), (r, list(ba), _dump(a, b))
 
 
 @settings(max_examples=250)
@@ -143,7 +147,7 @@ def test_reverse_maps_t(pair: tuple[RationalBezier, RationalBezier]) -> None:
     ab = _run(a, b)
     rev = _run(a.reversed(), b)
     for r in _clean_crossings(a, b, ab):
-        assert _has(rev, 1.0 - r.t, r.u, _param_tol(a, b)), (r, list(rev))
+        assert _has(rev, 1.0 - r.t, r.u, _param_tol(a, b)), (r, list(rev), _dump(a, b))
 
 
 @settings(max_examples=250)
@@ -157,7 +161,7 @@ def test_affine_map_keeps_parameters(pair: tuple[RationalBezier, RationalBezier]
     ab = _run(a, b)
     mapped = _run(a.transformed(m), b.transformed(m))
     for r in _clean_crossings(a, b, ab):
-        assert _has(mapped, r.t, r.u, 10 * _param_tol(a, b)), (r, list(mapped))
+        assert _has(mapped, r.t, r.u, 10 * _param_tol(a, b)), (r, list(mapped), _dump(a, b))
 
 
 @settings(max_examples=250)
@@ -171,4 +175,4 @@ def test_split_gives_same_points(pair: tuple[RationalBezier, RationalBezier], s:
     merged = IntersectionList([Intersection(s * r.t, r.u, r.point, r.kind) for r in lres.points]
                               + [Intersection(s + (1 - s) * r.t, r.u, r.point, r.kind) for r in rres.points])
     for r in _clean_crossings(a, b, ab):
-        assert _has(merged, r.t, r.u, _param_tol(a, b)), (r, list(merged))
+        assert _has(merged, r.t, r.u, _param_tol(a, b)), (r, list(merged), _dump(a, b), s)

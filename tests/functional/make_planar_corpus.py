@@ -251,7 +251,7 @@ def build() -> list[dict[str, Any]]:
                        [{"t": 0.5, "u": 0.5, "kind": "tangent"}], tangent_tol=1e-5))
     # near-tangent crossing pairs: parabola y = (2t-1)^2 against y = c (roots t = 1/2 +- sqrt(c)/2)
     pp = np.array([[-1.0, 1.0], [0.0, -1.0], [1.0, 1.0]])
-    for c in (2.0**-8, 2.0**-26, 2.0**-34, 2.0**-40):
+    for c in (2.0**-8, 2.0**-26, 2.0**-34, 2.0**-40, 2.0**-46, 2.0**-50, 2.0**-54):
         s = math.sqrt(c) / 2
         cases.append(_case("close crossings", f"two crossings c={c}", pp, None,
                            np.array([[-1.0, c], [1.0, c]]), None,
