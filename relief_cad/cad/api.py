@@ -529,6 +529,25 @@ def _shared_vertex_contact(r: _Raw, tol: float) -> bool:
     return False
 
 
+def _close_edge_pairs(infos_a: list[_EdgeInfo], infos_b: list[_EdgeInfo], tol: float) -> Any:
+    """Index pairs of edges whose boxes, widened by ``tol``, overlap (vectorised for many edges)."""
+    if len(infos_a) * len(infos_b) <= 16:
+        out = []
+        for ia, ea in enumerate(infos_a):
+            lo_a, hi_a = ea.lo.tolist(), ea.hi.tolist()
+            for ib, eb in enumerate(infos_b):
+                lo_b, hi_b = eb.lo.tolist(), eb.hi.tolist()
+                if all(lo_a[k] - tol <= hi_b[k] and lo_b[k] - tol <= hi_a[k] for k in range(3)):
+                    out.append((ia, ib))
+        return out
+    lo_a = np.array([e.lo for e in infos_a]) - tol
+    hi_a = np.array([e.hi for e in infos_a]) + tol
+    lo_b = np.array([e.lo for e in infos_b])
+    hi_b = np.array([e.hi for e in infos_b])
+    close = np.all((lo_a[:, None, :] <= hi_b[None, :, :]) & (lo_b[None, :, :] <= hi_a[:, None, :]), axis=2)
+    return zip(*np.nonzero(close), strict=True)
+
+
 def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float, list[_EdgeInfo]]:
     flavour = flavour_of(a)
     infos_a = _prepare(a)
@@ -547,12 +566,7 @@ def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float, lis
     planar = frame is not None
     jobs: list[_Job] = []
     edge_pairs: list[tuple[_EdgeInfo, _EdgeInfo, bool]] = []
-    lo_a = np.array([e.lo for e in infos_a]) - ftol
-    hi_a = np.array([e.hi for e in infos_a]) + ftol
-    lo_b = lo_a if b is None else np.array([e.lo for e in infos_b])
-    hi_b = hi_a if b is None else np.array([e.hi for e in infos_b])
-    close = np.all((lo_a[:, None, :] <= hi_b[None, :, :]) & (lo_b[None, :, :] <= hi_a[:, None, :]), axis=2)
-    for ia, ib in zip(*np.nonzero(close), strict=True):
+    for ia, ib in _close_edge_pairs(infos_a, infos_b, ftol):
         if b is None and ib < ia:
             continue
         ea, eb = infos_a[ia], infos_b[ib]
