@@ -345,11 +345,11 @@ def _core() -> tuple[Any, Any]:
 
     core: Any = getattr(relief_cad, "intersect", None)
     many: Any = getattr(relief_cad, "intersect_many", None)
-    if core is None:  # pragma: no cover - until the package exports it
+    if core is None or many is None:  # pragma: no cover - the package exports both today
         from .. import intersection
 
-        core = intersection.intersect
-        many = getattr(intersection, "intersect_many", None)
+        core = core or intersection.intersect
+        many = many or getattr(intersection, "intersect_many", None)
     return core, many
 
 
