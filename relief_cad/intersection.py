@@ -28,6 +28,7 @@ The planar solver (one numba kernel, :mod:`relief_cad._kernels`):
 
 from __future__ import annotations
 
+import gc
 import math
 from collections.abc import Iterable, Sequence
 from typing import Any, Literal
@@ -394,6 +395,20 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     return _finish(IntersectionList(items, res.unresolved), on_budget)
 
 
+def _collect(res: FloatArray, points: FloatArray, out_items: list[list[Result]],
+             out_boxes: list[list[ParameterBox]]) -> None:
+    """Distribute batch kernel rows (column 0 = pair index) into per-pair result lists."""
+    for i, r in enumerate(res.tolist()):
+        j = int(r[0])
+        kind = int(r[1])
+        if kind == KIND_CROSSING or kind == KIND_TANGENT:
+            out_items[j].append(_point(r[2], r[3], points[i], _KINDS[kind], r[8]))
+        elif kind == KIND_OVERLAP:
+            out_items[j].append(Overlap(t=(r[2], r[4]), u=(r[3], r[5])))
+        else:
+            out_boxes[j].append(ParameterBox(r[2], r[4], r[3], r[5]))
+
+
 def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
                    tol: float | None = None, budget: int | None = None,
                    on_budget: OnBudget = "raise") -> list[IntersectionList]:
@@ -427,34 +442,54 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
     ftol = None if tol is None else _check_tol(tol)
     planar: list[int] = []
     out: list[IntersectionList | None] = [None] * len(plist)
+    cps: list[FloatArray] = []
+    wss: list[FloatArray] = []
     for k, pr in enumerate(plist):
         if not isinstance(pr, tuple) or len(pr) != 2:
             raise InputTypeError(f"pairs[{k}] should be a tuple (a, b), not {type(pr).__name__}")
         a, b = pr
-        _check_curve(a, f"pairs[{k}][0]")
-        _check_curve(b, f"pairs[{k}][1]")
-        if a.dim == 2 and b.dim == 2:
+        if not isinstance(a, RationalBezier):
+            _check_curve(a, f"pairs[{k}][0]")
+        if not isinstance(b, RationalBezier):
+            _check_curve(b, f"pairs[{k}][1]")
+        pa = a.control_points
+        pb = b.control_points
+        if pa.shape[1] == 2 and pb.shape[1] == 2:
             planar.append(k)
+            cps.append(pa)
+            cps.append(pb)
+            wss.append(a.weights)
+            wss.append(b.weights)
         else:
             out[k] = intersect(a, b, tol=ftol, budget=nbudget, on_budget=on_budget)
     if planar:
-        curves: list[RationalBezier] = []
-        for k in planar:
-            curves.extend(plist[k])
-        sizes = np.array([c.degree + 1 for c in curves], dtype=np.int64)
-        offsets = np.zeros(len(curves) + 1, dtype=np.int64)
-        np.cumsum(sizes, out=offsets[1:])
-        pts = np.concatenate([c.control_points for c in curves])
-        wts = np.concatenate([c.weights for c in curves])
+        offsets = np.zeros(len(cps) + 1, dtype=np.int64)
+        np.cumsum(np.fromiter(map(len, cps), dtype=np.int64, count=len(cps)), out=offsets[1:])
+        pts = np.ascontiguousarray(np.concatenate(cps))
+        wts = np.ascontiguousarray(np.concatenate(wss))
+        pts.flags.writeable = False
+        wts.flags.writeable = False
         idx = np.arange(2 * len(planar), dtype=np.int64).reshape(-1, 2)
         # a tolerance <= 0 asks the kernel for the pair's default_tolerance
         tols = np.full(len(planar), -1.0 if ftol is None else ftol)
-        pts.flags.writeable = False
-        wts.flags.writeable = False
         res = intersect_batch_kernel(pts, wts, offsets, idx, tols, nbudget)
-        order = np.argsort(res[:, 0], kind="stable")
-        res = res[order]
-        bounds = np.searchsorted(res[:, 0], np.arange(len(planar) + 1))
+        out_items: list[list[Result]] = [[] for _ in planar]
+        out_boxes: list[list[ParameterBox]] = [[] for _ in planar]
+        points = res[:, 6:8].copy()
+        points.flags.writeable = False
+        # many small objects at once: keep the cyclic GC from rescanning them repeatedly
+        gc_enabled = gc.isenabled()
+        gc.disable()
+        try:
+            _collect(res, points, out_items, out_boxes)
+        finally:
+            if gc_enabled:
+                gc.enable()
         for j, k in enumerate(planar):
-            out[k] = _finish(_rows_to_list(res[bounds[j]:bounds[j + 1]]), on_budget)
+            items = out_items[j]
+            if len(items) > 1:
+                items.sort(key=lambda x: x.t[0] if isinstance(x, Overlap) else x.t)
+            boxes = out_boxes[j]
+            out[k] = (IntersectionList(items) if not boxes
+                      else _finish(IntersectionList(items, boxes), on_budget))
     return [o if o is not None else IntersectionList() for o in out]
