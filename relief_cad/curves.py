@@ -167,9 +167,9 @@ class RationalBezier:
     __slots__ = ("_h", "_points", "_weights", "_polynomial")
 
     _h: FloatArray
-    _points: FloatArray
-    _weights: FloatArray
-    _polynomial: bool
+    _points: FloatArray | None
+    _weights: FloatArray | None
+    _polynomial: bool | None
 
     def __init__(self, control_points: PointsLike, weights: ParamsLike | None = None) -> None:
         pts = _as_float_array(control_points, "control_points")
@@ -200,21 +200,25 @@ class RationalBezier:
         _check_finite(h, "weighted control points")
         self._set(h, pts, w)
 
-    def _set(self, h: FloatArray, pts: FloatArray, w: FloatArray) -> None:
-        for arr in (h, pts, w):
-            arr.flags.writeable = False
+    def _set(self, h: FloatArray, pts: FloatArray | None, w: FloatArray | None) -> None:
+        h.flags.writeable = False
         self._h = h
         self._points = pts
         self._weights = w
-        self._polynomial = bool(np.all(w == w[0]))
+        self._polynomial = None
+        for arr in (pts, w):
+            if arr is not None:
+                arr.flags.writeable = False
 
     @classmethod
     def _trusted(cls, h: FloatArray) -> RationalBezier:
-        """Build from homogeneous points known to be finite with positive weights (no checks)."""
+        """Build from homogeneous points known to be finite with positive weights (no checks).
+
+        The Cartesian points and weights are derived on first use (this is the hot path of
+        subdivision and of the CAD adapters).
+        """
         obj = cls.__new__(cls)
-        h = np.array(h, dtype=np.float64)
-        w = h[:, -1].copy()
-        obj._set(h, h[:, :-1] / w[:, None], w)
+        obj._set(np.array(h, dtype=np.float64), None, None)
         return obj
 
     @classmethod
@@ -271,11 +275,19 @@ class RationalBezier:
     @property
     def control_points(self) -> FloatArray:
         """Control points, shape ``(n + 1, d)``, read-only."""
+        if self._points is None:
+            pts = self._h[:, :-1] / self._h[:, -1:]
+            pts.flags.writeable = False
+            self._points = pts
         return self._points
 
     @property
     def weights(self) -> FloatArray:
         """Weights, shape ``(n + 1,)``, read-only, all > 0."""
+        if self._weights is None:
+            w = self._h[:, -1].copy()
+            w.flags.writeable = False
+            self._weights = w
         return self._weights
 
     @property
@@ -286,6 +298,9 @@ class RationalBezier:
     @property
     def is_polynomial(self) -> bool:
         """True when all weights are equal (the curve is a polynomial Bézier curve)."""
+        if self._polynomial is None:
+            w = self._h[:, -1]
+            self._polynomial = bool(np.all(w == w[0]))
         return self._polynomial
 
     # ------------------------------------------------------------------ evaluation
@@ -395,8 +410,8 @@ class RationalBezier:
         """
         n = self.degree
         h = self._h
-        if self._polynomial:
-            pts = n * np.diff(self._points, axis=0)
+        if self.is_polynomial:
+            pts = n * np.diff(self.control_points, axis=0)
             if n == 1:
                 pts = np.vstack([pts, pts])
             return RationalBezier(pts)
@@ -528,13 +543,13 @@ class RationalBezier:
         [1.0, 1.0, 1.0]
         """
         n = self.degree
-        w = self._weights
+        w = self.weights
         log_lam = (math.log(w[0]) - math.log(w[n])) / n
         scale = np.exp(np.arange(n + 1) * log_lam - math.log(w[0]))
         new_w = w * scale
         new_w[0] = 1.0
         new_w[n] = 1.0
-        return RationalBezier(self._points.copy(), new_w)
+        return RationalBezier(self.control_points.copy(), new_w)
 
     def bounding_box(self) -> tuple[FloatArray, FloatArray]:
         """Return ``(lo, hi)``, the box of the control points, which contains the curve.
@@ -545,7 +560,7 @@ class RationalBezier:
         >>> lo.tolist(), hi.tolist()
         ([0.0, 0.0], [2.0, 2.0])
         """
-        return self._points.min(axis=0), self._points.max(axis=0)
+        return self.control_points.min(axis=0), self.control_points.max(axis=0)
 
     def transformed(self, matrix: PointsLike) -> RationalBezier:
         """Apply a projective map (collineation) exactly through the homogeneous control points.
@@ -604,10 +619,10 @@ class RationalBezier:
 
     # ------------------------------------------------------------------ dunder
     def __repr__(self) -> str:
-        pts = np.array2string(self._points, separator=", ", precision=6).replace("\n", "")
-        if self._polynomial and self._weights[0] == 1.0:
+        pts = np.array2string(self.control_points, separator=", ", precision=6).replace("\n", "")
+        if self.is_polynomial and self.weights[0] == 1.0:
             return f"RationalBezier({pts})"
-        w = np.array2string(self._weights, separator=", ", precision=6)
+        w = np.array2string(self.weights, separator=", ", precision=6)
         return f"RationalBezier({pts}, weights={w})"
 
     def __eq__(self, other: object) -> bool:
