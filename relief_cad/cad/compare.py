@@ -958,7 +958,8 @@ def plot_pair_png(
     polys = [_edge_polyline(e) for e in edges_a] + [_edge_polyline(e) for e in edges_b]
     pts = np.vstack(polys) if polys else np.zeros((1, 3))
     origin = pts.mean(axis=0)
-    _, _, vt = np.linalg.svd(pts - origin, full_matrices=True)
+    centred = np.vstack([pts - origin, np.zeros((max(0, 3 - pts.shape[0]), 3))])
+    _, _, vt = np.linalg.svd(centred, full_matrices=False)  # thin: the full SVD is N x N
     if abs(vt[2][2]) > 1 - 1e-9:
         basis = np.array([[1.0, 0, 0], [0, 1.0, 0]])
         origin = np.zeros(3)

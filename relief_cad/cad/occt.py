@@ -257,7 +257,8 @@ def edge_plane(points: np.ndarray, tol: float) -> tuple[np.ndarray, np.ndarray, 
     pts = np.asarray(points, dtype=np.float64)
     origin = pts.mean(axis=0)
     centred = pts - origin
-    _, s, vt = np.linalg.svd(centred, full_matrices=True)
+    padded = np.vstack([centred, np.zeros((max(0, 3 - centred.shape[0]), 3))])
+    _, s, vt = np.linalg.svd(padded, full_matrices=False)  # thin: the full SVD is N x N
     normal = vt[2]
     if float(np.max(np.abs(centred @ normal))) > tol:
         return None

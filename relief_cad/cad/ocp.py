@@ -709,7 +709,10 @@ def planar_frame(points: np.ndarray, tol: float) -> np.ndarray | None:
         # parallel to XY (the common sketch case): drop z, keeping x and y bit-exact
         return np.array([[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0]])
     o = pts.mean(axis=0)
-    _, sv, vt = np.linalg.svd(pts - o, full_matrices=True)
+    # thin SVD (zero rows pad to 3 without changing the right singular vectors): the full
+    # one builds an N x N matrix and dominated intersections() on edges with many poles
+    centred = np.vstack([pts - o, np.zeros((max(0, 3 - pts.shape[0]), 3))])
+    _, sv, vt = np.linalg.svd(centred, full_matrices=False)
     normal = vt[2]
     if float(np.max(np.abs((pts - o) @ normal))) > tol:
         return None
