@@ -8,14 +8,16 @@ this one.
 * :func:`segments` -- an edge as exact rational Bézier segments plus parameter maps;
 * :func:`intersect` -- native vertices where edges of shapes meet;
 * :func:`intersections` -- the rich results (:class:`EdgeIntersection`, :class:`EdgeOverlap`);
-* :func:`split` -- edges cut at their intersections, as native edges.
+* :func:`split` -- edges cut at their intersections, as native edges;
+* :func:`occt_intersections` -- OCCT's own answer on the same shapes, in the same result types;
+* :func:`compare` -- relief_cad against OCCT, every disagreement judged by a 50-digit arbiter.
 
 A missing CAD package raises :class:`~relief_cad.errors.AdapterUnavailableError`
 with the install hint ``pip install "relief-cad[cad]"``.
 
 >>> from relief_cad import cad
 >>> sorted(cad.__all__)[:3]
-['EdgeIntersection', 'EdgeOverlap', 'EdgeResult']
+['Comparison', 'Disagreement', 'EdgeIntersection']
 """
 
 from __future__ import annotations
@@ -25,6 +27,14 @@ from .ocp import Segment, edges_of
 from .results import EdgeIntersection, EdgeOverlap, EdgeResult
 
 __all__ = [
+    "Comparison",
+    "Disagreement",
+    "Match",
+    "Verdict",
+    "arbitrate_overlap",
+    "arbitrate_point",
+    "compare",
+    "occt_intersections",
     "EdgeIntersection",
     "EdgeOverlap",
     "EdgeResult",
