@@ -18,12 +18,21 @@ The planar solver (one numba kernel, :mod:`relief_cad._kernels`):
    larger sub-curve when that stalls too, and a "flat band" stop when both
    sub-curves lie within ``tol`` of a line (tangent contacts);
 4. candidate boxes are clustered; Newton's method on ``a(t) - b(u) = 0`` polishes
-   every root; a cluster without a root is a near-miss and gives one tangent
-   contact at the closest approach when the gap is within ``tol``; roots with no
-   measurable gap between them (a double root split by rounding) merge into one
-   tangent contact;
+   every root, finished with a double-double residual when the root is
+   ill-conditioned (high degree, small crossing angle); a root is *certified*
+   when that iteration reaches a fixed point in double parameters. Neighbouring
+   roots with no measurable gap between them merge into one tangent contact
+   (a double root split by rounding) unless both are certified (genuine
+   crossings as close as 1e-8 stay two). A cluster without a root is a near-miss:
+   one tangent contact at the closest approach when the gap is within ``tol``;
 5. the kind is ``"tangent"`` when the tangents at the contact are parallel
-   (``|sin| < 1e-7`` for an isolated root), otherwise ``"crossing"``.
+   (``|sin| < 1e-7`` for an isolated root, ``< 1e-10`` inside a cluster of
+   several roots), otherwise ``"crossing"``; so an osculating contact that crosses
+   (``y = x**3`` against ``y = 0``) is ``"tangent"``.
+
+Accuracy: transversal crossings to a few ulps of the parameters (1e-13 on the
+certified corpus, including degree-20 Chebyshev-like curves and crossings 1e-8
+apart); tangent contacts to about ``sqrt(eps)`` (1e-8).
 """
 
 from __future__ import annotations
