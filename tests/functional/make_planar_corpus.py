@@ -277,6 +277,24 @@ def build() -> list[dict[str, Any]]:
     s2s = np.array([[0.0, 0.0], [1.0, -1.0], [2.0, 1.0]])
     cases.append(_case("end points", "start to start", c3, None, s2s, None,
                        curve_curve_truth(c3, None, s2s, None), exact_ends=True))
+    cases.append(_case("end points", "T-junction cubic on line", np.array([[0.0, 3.0], [1.0, 2.0], [1.5, 2.5], [2.0, 1.0]]),
+                       None, np.array([[0.0, 0.0], [4.0, 2.0]]), None,
+                       curve_curve_truth(np.array([[0.0, 3.0], [1.0, 2.0], [1.5, 2.5], [2.0, 1.0]]), None,
+                                         np.array([[0.0, 0.0], [4.0, 2.0]]), None), exact_ends=True))
+    g1a = np.array([[0.0, 0.0], [1.0, 2.0], [2.0, 2.0], [3.0, 1.0]])
+    g1b = np.array([[3.0, 1.0], [4.0, 0.0], [5.0, 1.0], [6.0, 0.0]])
+    cases.append(_case("end points", "G1 cubics", g1a, None, g1b, None,
+                       [{"t": 1.0, "u": 0.0, "kind": "tangent"}], exact_ends=True))
+    # more random rational pairs (non-dyadic weights)
+    for k in range(6):
+        na = 2 + k % 3
+        nb = 4 - k % 3
+        pa = rng.random((na + 1, 2))
+        pb = rng.random((nb + 1, 2))
+        wa = rng.uniform(0.3, 3.0, na + 1)
+        wb = rng.uniform(0.3, 3.0, nb + 1)
+        cases.append(_case("rational", f"rational random {na}x{nb} #{k}", pa, wa, pb, wb,
+                           curve_curve_truth(pa, wa, pb, wb)))
     # overlaps (dyadic sub-segments are exact)
     cub4 = np.array([[0.0, 0.0], [1.0, 3.0], [3.0, -1.0], [4.0, 2.0]])
 
