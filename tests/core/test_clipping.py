@@ -85,3 +85,27 @@ def test_shape_errors() -> None:
         hull_range(np.zeros(1))
     with pytest.raises(ShapeError):
         clip_range(np.zeros((3, 2)), np.ones(2), (0.0, 1.0, 0.0, 0.0, 1.0))
+
+
+def test_intersect_packed_matches_intersect() -> None:
+    from relief_cad.clipping import intersect_packed
+    from relief_cad.intersection import intersect
+
+    rng = np.random.default_rng(5)
+    curves = [RationalBezier(rng.random((4, 2))) for _ in range(20)]
+    pts = np.concatenate([c.control_points for c in curves])
+    offsets = np.arange(0, 4 * 21, 4)
+    pairs = np.array([[i, i + 1] for i in range(19)])
+    rows = intersect_packed(pts, np.ones(pts.shape[0]), offsets, pairs)
+    assert pts.flags.writeable
+    for k, (i, j) in enumerate(pairs):
+        mine = sorted((r[2], r[3]) for r in rows if r[0] == k)
+        ref = [(x.t, x.u) for x in intersect(curves[i], curves[j])]
+        assert mine == ref
+
+
+def test_intersect_packed_rejects_bad_offsets() -> None:
+    from relief_cad.clipping import intersect_packed
+
+    with pytest.raises(ShapeError):
+        intersect_packed(np.zeros((4, 2)), np.ones(4), np.array([0, 1, 4]), np.array([[0, 1]]))
