@@ -1021,7 +1021,7 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
     ncand = 0
     unres = np.empty((4, 4))
     nunres = 0
-    epsb = max(tl, 1e-10)
+    epsb = max(tl, 1e-7)
     iters = 0
     margin = 1e-9
     while nstack > 0:
