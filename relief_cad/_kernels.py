@@ -1188,23 +1188,42 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
         bestres = math.inf
         bt = 0.0
         bu = 0.0
-        cnt = 0
         ct0 = math.inf
         ct1 = -math.inf
         cu0 = math.inf
         cu1 = -math.inf
         for i in range(ncand):
+            if label[i] == root_label:
+                ct0 = min(ct0, cands[i, 0])
+                ct1 = max(ct1, cands[i, 1])
+                cu0 = min(cu0, cands[i, 2])
+                cu1 = max(cu1, cands[i, 3])
+        # Newton seeds: member box centres, and for a wide cluster (a band of
+        # near-tangency that may hold several roots) points along both diagonals
+        wide = nmem >= 2 or ct1 - ct0 > 1e-6 or cu1 - cu0 > 1e-6
+        nseed = (nmem + stride - 1) // stride + (14 if wide else 0)
+        seeds = np.empty((nseed, 2))
+        ks = 0
+        cnt = 0
+        for i in range(ncand):
             if label[i] != root_label:
                 continue
-            ct0 = min(ct0, cands[i, 0])
-            ct1 = max(ct1, cands[i, 1])
-            cu0 = min(cu0, cands[i, 2])
-            cu1 = max(cu1, cands[i, 3])
             cnt += 1
-            if (cnt - 1) % stride != 0:
+            if (cnt - 1) % stride != 0 or ks >= nseed:
                 continue
-            t, u, r = _newton(HA, HB, 0.5 * (cands[i, 0] + cands[i, 1]),
-                              0.5 * (cands[i, 2] + cands[i, 3]), wa, wb, 60)
+            seeds[ks, 0] = 0.5 * (cands[i, 0] + cands[i, 1])
+            seeds[ks, 1] = 0.5 * (cands[i, 2] + cands[i, 3])
+            ks += 1
+        if wide:
+            for q in range(7):
+                f = (q + 0.5) / 7.0
+                seeds[ks, 0] = ct0 + f * (ct1 - ct0)
+                seeds[ks, 1] = cu0 + f * (cu1 - cu0)
+                seeds[ks + 1, 0] = ct0 + f * (ct1 - ct0)
+                seeds[ks + 1, 1] = cu1 - f * (cu1 - cu0)
+                ks += 2
+        for q in range(ks):
+            t, u, r = _newton(HA, HB, seeds[q, 0], seeds[q, 1], wa, wb, 60)
             if r < bestres:
                 bestres = r
                 bt = t
@@ -1214,8 +1233,9 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
                 _x, _y, adx, ady, _a2, _a3 = _eval(HA, t, wa)
                 _x, _y, bdx, bdy, _b2, _b3 = _eval(HB, u, wb)
                 sig = abs(adx * bdy - ady * bdx) / max(math.hypot(adx, ady), math.hypot(bdx, bdy), 1e-300)
-                cert = 0.0
+                cert = 1.0  # a well-conditioned root is trusted as is
                 if (na + nb) * _EPS > 1e-14 * sig:
+                    cert = 0.0
                     t2, u2, ok = _polish_dd(HA, HB, t, u, wa, wb, da, db, 10)
                     if ok:
                         t = t2
@@ -1225,6 +1245,10 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
                 for k in range(nroots):
                     if abs(roots[k, 0] - t) <= 1e-11 and abs(roots[k, 1] - u) <= 1e-11:
                         dup = True
+                        if cert > roots[k, 2]:  # keep the certified copy
+                            roots[k, 0] = t
+                            roots[k, 1] = u
+                            roots[k, 2] = cert
                         break
                 if not dup:
                     roots = _grow(roots, nroots + 1)
@@ -1243,6 +1267,20 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
                 pts[npts, 4] = 0.0
                 npts += 1
             continue
+        # certified roots explain the cluster: drop uncertified near-roots between them
+        ncert = 0
+        for k in range(nroots):
+            if roots[k, 2] == 1.0:
+                ncert += 1
+        if 0 < ncert < nroots:
+            k2 = 0
+            for k in range(nroots):
+                if roots[k, 2] == 1.0:
+                    roots[k2, 0] = roots[k, 0]
+                    roots[k2, 1] = roots[k, 1]
+                    roots[k2, 2] = roots[k, 2]
+                    k2 += 1
+            nroots = k2
         # sort roots by t (insertion sort)
         for i in range(1, nroots):
             j = i

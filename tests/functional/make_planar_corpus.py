@@ -257,6 +257,16 @@ def build() -> list[dict[str, Any]]:
                            np.array([[-1.0, c], [1.0, c]]), None,
                            [{"t": 0.5 - s, "u": 0.5 - s, "kind": "crossing"},
                             {"t": 0.5 + s, "u": 0.5 + s, "kind": "crossing"}]))
+    # near-tangent crossings through an inflection: y = x^3 against y = e x (x = 0, +-sqrt(e));
+    # the middle crossing has angle e (down to 1e-9)
+    cub3 = np.array([[-1.0, -1.0], [-1.0 / 3.0, 1.0], [1.0 / 3.0, -1.0], [1.0, 1.0]])
+    for e in (2.0**-14, 2.0**-26, 2.0**-30):
+        r = math.sqrt(e)
+        cases.append(_case("close crossings", f"inflection crossings e={e}", cub3, None,
+                           np.array([[-1.0, -e], [1.0, e]]), None,
+                           [{"t": (1 - r) / 2, "u": (1 - r) / 2, "kind": "crossing"},
+                            {"t": 0.5, "u": 0.5, "kind": "crossing"},
+                            {"t": (1 + r) / 2, "u": (1 + r) / 2, "kind": "crossing"}]))
     # near misses
     for gap, expect in ((1e-6, []), (1e-10, [{"t": 0.5, "u": 0.5, "kind": "tangent"}])):
         cases.append(_case("near miss", f"parabola vs line gap {gap}", par, None,
