@@ -1201,7 +1201,7 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
         # Newton seeds: member box centres, and for a wide cluster (a band of
         # near-tangency that may hold several roots) points along both diagonals
         wide = nmem >= 2 or ct1 - ct0 > 1e-6 or cu1 - cu0 > 1e-6
-        nseed = (nmem + stride - 1) // stride + (14 if wide else 0)
+        nseed = (nmem + stride - 1) // stride + (10 if wide else 0)
         seeds = np.empty((nseed, 2))
         ks = 0
         cnt = 0
@@ -1215,8 +1215,8 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
             seeds[ks, 1] = 0.5 * (cands[i, 2] + cands[i, 3])
             ks += 1
         if wide:
-            for q in range(7):
-                f = (q + 0.5) / 7.0
+            for q in range(5):
+                f = (q + 0.5) / 5.0
                 seeds[ks, 0] = ct0 + f * (ct1 - ct0)
                 seeds[ks, 1] = cu0 + f * (cu1 - cu0)
                 seeds[ks + 1, 0] = ct0 + f * (ct1 - ct0)
@@ -1229,6 +1229,13 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
                 bt = t
                 bu = u
             if r <= rnd:
+                seen = False
+                for k in range(nroots):
+                    if roots[k, 2] == 1.0 and abs(roots[k, 0] - t) <= 1e-12 and abs(roots[k, 1] - u) <= 1e-12:
+                        seen = True
+                        break
+                if seen:
+                    continue
                 # ill-conditioned root (high degree, near-tangent): double-double polish
                 _x, _y, adx, ady, _a2, _a3 = _eval(HA, t, wa)
                 _x, _y, bdx, bdy, _b2, _b3 = _eval(HB, u, wb)
