@@ -39,7 +39,6 @@ __all__ = [
     "intersect_batch_kernel",
     "intersect_one_kernel",
     "intersect_pair_kernel",
-    "line_roots_kernel",
 ]
 
 KIND_CROSSING = 0
@@ -407,41 +406,6 @@ def _closest(HA, HB, t, u, wa, wb, iters):  # type: ignore[no-untyped-def]
 
 
 @njit(cache=True, error_model="numpy")
-def _project(H, px, py, wk, nsamp):  # type: ignore[no-untyped-def]
-    """Parameter ``u`` of the point of curve ``H`` closest to ``(px, py)``, and the distance."""
-    best = math.inf
-    bu = 0.0
-    for k in range(nsamp + 1):
-        uu = k / nsamp
-        x, y, _dx, _dy, _ddx, _ddy = _eval(H, uu, wk)
-        d = math.hypot(x - px, y - py)
-        if d < best:
-            best = d
-            bu = uu
-    u = bu
-    for _ in range(40):
-        x, y, dx, dy, ddx, ddy = _eval(H, u, wk)
-        fx = x - px
-        fy = y - py
-        g = fx * dx + fy * dy
-        h = dx * dx + dy * dy + fx * ddx + fy * ddy
-        if h <= 0.0:
-            break
-        nu = min(1.0, max(0.0, u - g / h))
-        nx, ny, _a, _b, _c, _d = _eval(H, nu, wk)
-        nd = math.hypot(nx - px, ny - py)
-        if nd > best:
-            break
-        done = nu == u
-        best = nd
-        bu = nu
-        u = nu
-        if done:
-            break
-    return bu, best
-
-
-@njit(cache=True, error_model="numpy")
 def _point_on(H, px, py, tol, S, C, V, e, wk):  # type: ignore[no-untyped-def]
     """Closest point of curve ``H`` to ``(px, py)`` if it may be within ``tol``.
 
@@ -745,17 +709,6 @@ def _homog(P, W, cx, cy, scale):  # type: ignore[no-untyped-def]
         H[i, 1] = w * ((P[i, 1] - cy) * scale)
         H[i, 2] = w
     return H
-
-
-@njit(cache=True, error_model="numpy")
-def _near_hull(P, px, py, tol):  # type: ignore[no-untyped-def]
-    """False when ``(px, py)`` is farther than ``tol`` outside one of ``P``'s fat lines."""
-    for perp in (False, True):
-        nx, ny, c, dmin, dmax = fat_line_kernel(P, perp)
-        d = nx * px + ny * py + c
-        if d < dmin - tol or d > dmax + tol:
-            return False
-    return True
 
 
 @njit(cache=True, error_model="numpy")
@@ -1459,113 +1412,3 @@ def intersect_one_kernel(PA, WA, PB, WB, tol, budget):  # type: ignore[no-untype
     res = np.empty((8, RES_COLS))
     res, nres = intersect_pair_kernel(PA, WA, PB, WB, tol, budget, 0, res, 0)
     return res[:nres]
-
-
-# --------------------------------------------------------------------------- lines
-
-
-@njit(cache=True, error_model="numpy")
-def line_roots_kernel(e, W, maxdepth):  # type: ignore[no-untyped-def]
-    """Roots in ``[0, 1]`` of the Bernstein polynomial with coefficients ``e``.
-
-    ``W`` holds the weights of the curve (for a Newton polish on the rational
-    distance ``sum e_j B_j / sum W_j B_j``, whose roots are the numerator's).
-    Bézier clipping against the ``s`` axis with subdivision on stalls; returns a
-    sorted array of roots (a cluster of roots closer than ``1e-12`` counts once).
-    """
-    m = e.shape[0]
-    n = m - 1
-    out = np.empty(8)
-    nout = 0
-    stack = np.empty((32, 2))
-    stack[0, 0] = 0.0
-    stack[0, 1] = 1.0
-    nst = 1
-    seg = np.empty((m, 3))
-    H = np.empty((m, 3))
-    for i in range(m):
-        H[i, 0] = e[i]
-        H[i, 1] = 0.0
-        H[i, 2] = 1.0
-    coef = np.empty(m)
-    scr = np.empty(m)
-    big = 0.0
-    for i in range(m):
-        big = max(big, abs(e[i]))
-    if big == 0.0:
-        return out[:0]
-    steps = 0
-    while nst > 0 and steps < maxdepth:
-        nst -= 1
-        s0 = stack[nst, 0]
-        s1 = stack[nst, 1]
-        while steps < maxdepth:
-            steps += 1
-            _segment(H, s0, s1, seg)
-            lo = math.inf
-            hi = -math.inf
-            for i in range(m):
-                coef[i] = seg[i, 0]
-                lo = min(lo, coef[i])
-                hi = max(hi, coef[i])
-            if lo > 0.0 or hi < 0.0:
-                break
-            if s1 - s0 <= 1e-13:
-                out = _grow1(out, nout + 1)
-                out[nout] = 0.5 * (s0 + s1)
-                nout += 1
-                break
-            a, b = hull_range_kernel(coef)
-            for i in range(m):
-                scr[i] = -coef[i]
-            a2, b2 = hull_range_kernel(scr)
-            a = max(a, a2)
-            b = min(b, b2)
-            if a > b:
-                break
-            w = s1 - s0
-            n0 = s0 + a * w
-            n1 = s0 + b * w
-            if n1 - n0 > _SPLIT_RATIO * w:
-                stack = _grow(stack, nst + 1)
-                mid = 0.5 * (n0 + n1)
-                stack[nst, 0] = mid
-                stack[nst, 1] = n1
-                nst += 1
-                s0 = n0
-                s1 = mid
-            else:
-                s0 = n0
-                s1 = max(n0, n1)
-    # polish on the polynomial numerator
-    for k in range(nout):
-        s = out[k]
-        for _ in range(30):
-            v, _y, d, _dy, _dd, _ddy = _eval(H, s, seg)
-            if d == 0.0:
-                break
-            ns = min(1.0, max(0.0, s - v / d))
-            if ns == s:
-                break
-            s = ns
-        out[k] = s
-    out = np.sort(out[:nout])
-    # cluster
-    res = np.empty(nout)
-    nr = 0
-    for k in range(nout):
-        if nr > 0 and out[k] - res[nr - 1] <= 1e-12:
-            continue
-        res[nr] = out[k]
-        nr += 1
-    _ = n
-    return res[:nr]
-
-
-@njit(cache=True, error_model="numpy")
-def _grow1(arr, n):  # type: ignore[no-untyped-def]
-    if n <= arr.shape[0]:
-        return arr
-    out = np.empty(max(n, 2 * arr.shape[0]))
-    out[: arr.shape[0]] = arr
-    return out

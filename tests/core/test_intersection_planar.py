@@ -266,3 +266,15 @@ def test_kernels_run_without_jit() -> None:
     )
     assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
     assert "passed" in out.stdout
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_kernel_default_tolerance_matches_tolerances_module(seed: int) -> None:
+    """The kernel computes the default tolerance itself (speed); it must equal the documented one."""
+    from relief_cad._kernels import _default_tol
+    from relief_cad.tolerances import default_tolerance
+
+    rng = np.random.default_rng(seed)
+    pa = rng.normal(size=(4, 2)) * 10.0 ** rng.integers(-5, 6) + rng.normal() * 1e4
+    pb = rng.normal(size=(3, 2)) * 10.0 ** rng.integers(-5, 6)
+    assert _default_tol(pa, pb) == pytest.approx(default_tolerance(pa, pb), rel=1e-12)
