@@ -1279,7 +1279,11 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
             if j == i:
                 sn = _angle_sin(HA, HB, roots[i, 0], roots[i, 1], wa, wb)
                 kind = KIND_CROSSING
-                if nroots == 1 and sn < 1e-7:
+                if roots[i, 2] == 1.0:
+                    # a certified (simple) root crosses, however small the angle
+                    if sn < 1e-12:
+                        kind = KIND_TANGENT
+                elif nroots == 1 and sn < 1e-7:
                     kind = KIND_TANGENT
                 elif sn < 1e-10:
                     kind = KIND_TANGENT

@@ -25,10 +25,12 @@ The planar solver (one numba kernel, :mod:`relief_cad._kernels`):
    (a double root split by rounding) unless both are certified (genuine
    crossings as close as 1e-8 stay two). A cluster without a root is a near-miss:
    one tangent contact at the closest approach when the gap is within ``tol``;
-5. the kind is ``"tangent"`` when the tangents at the contact are parallel
-   (``|sin| < 1e-7`` for an isolated root, ``< 1e-10`` inside a cluster of
-   several roots), otherwise ``"crossing"``; so an osculating contact that crosses
-   (``y = x**3`` against ``y = 0``) is ``"tangent"``.
+5. the kind is ``"crossing"`` for a certified (simple) root unless the tangents
+   are parallel to ``|sin| < 1e-12``; an uncertified root (a double or triple
+   root as far as double-double can tell) is ``"tangent"`` when ``|sin| < 1e-7``
+   (isolated) or ``< 1e-10`` (in a cluster of several roots); so an osculating
+   contact that crosses (``y = x**3`` against ``y = 0``) is ``"tangent"``. End
+   point contacts are ``"tangent"`` when ``|sin| < 1e-7``.
 
 Accuracy: transversal crossings to a few ulps of the parameters (1e-13 on the
 certified corpus, including degree-20 Chebyshev-like curves and crossings 1e-8
