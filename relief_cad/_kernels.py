@@ -1,4 +1,4 @@
-"""Numba kernels of the planar Bézier-clipping intersector (hot loops only).
+"""Numba kernels of the planar Bézier-clipping intersector and of the space relief scheme (hot loops only).
 
 Every function here is ``@njit(cache=True, error_model="numpy")`` and also runs as plain Python when
 ``NUMBA_DISABLE_JIT=1``. The public, documented API lives in
@@ -39,6 +39,10 @@ __all__ = [
     "intersect_batch_kernel",
     "intersect_one_kernel",
     "intersect_pair_kernel",
+    "SPACE_COLS",
+    "STATUS_ARTEFACT",
+    "STATUS_OK",
+    "space_pair_kernel",
 ]
 
 KIND_CROSSING = 0
@@ -677,19 +681,59 @@ def _bbox_update(P, box):  # type: ignore[no-untyped-def]
 
 
 @njit(cache=True, error_model="numpy")
-def _default_tol(PA, PB):  # type: ignore[no-untyped-def]
-    """:func:`relief_cad.tolerances.default_tolerance` of both control polygons."""
-    box = np.empty(5)
-    box[0] = math.inf
-    box[1] = -math.inf
-    box[2] = math.inf
-    box[3] = -math.inf
-    box[4] = 0.0
-    _bbox_update(PA, box)
-    _bbox_update(PB, box)
-    dx = box[1] - box[0]
-    dy = box[3] - box[2]
-    tol = 1e-9 * math.sqrt(dx * dx + dy * dy) + 64.0 * _EPS * box[4]
+def _curve_box_update(P, W, box):  # type: ignore[no-untyped-def]
+    """Grow ``box`` (per coordinate ``[lo, hi]`` pairs) by samples of the curve itself.
+
+    The curve is sampled at ``2 (n + 1) + 1`` uniform parameters by homogeneous de
+    Casteljau: the curve's own extent, not its control polygon's (which can be far
+    larger for ill-conditioned curves).
+    """
+    m = P.shape[0]
+    d = P.shape[1]
+    ns = 2 * m + 1
+    wk = np.empty((m, d + 1))
+    for k in range(ns):
+        t = k / (ns - 1.0)
+        s = 1.0 - t
+        for i in range(m):
+            for j in range(d):
+                wk[i, j] = W[i] * P[i, j]
+            wk[i, d] = W[i]
+        for r in range(1, m):
+            for i in range(m - r):
+                for j in range(d + 1):
+                    wk[i, j] = s * wk[i, j] + t * wk[i + 1, j]
+        for j in range(d):
+            x = wk[0, j] / wk[0, d]
+            box[2 * j] = min(box[2 * j], x)
+            box[2 * j + 1] = max(box[2 * j + 1], x)
+
+
+@njit(cache=True, error_model="numpy")
+def _default_tol(PA, WA, PB, WB):  # type: ignore[no-untyped-def]
+    """:func:`relief_cad.tolerances.default_tolerance` of both curves (2-D or 3-D).
+
+    ``1e-9`` times the diagonal of the curves' joint extent (sampled) plus ``64 eps``
+    times the largest control-point coordinate (the rounding level of the data).
+    """
+    d = PA.shape[1]
+    box = np.empty(2 * d)
+    for j in range(d):
+        box[2 * j] = math.inf
+        box[2 * j + 1] = -math.inf
+    _curve_box_update(PA, WA, box)
+    _curve_box_update(PB, WB, box)
+    big = 0.0
+    for i in range(PA.shape[0]):
+        for j in range(d):
+            big = max(big, abs(PA[i, j]))
+    for i in range(PB.shape[0]):
+        for j in range(d):
+            big = max(big, abs(PB[i, j]))
+    diag = 0.0
+    for j in range(d):
+        diag += (box[2 * j + 1] - box[2 * j]) ** 2
+    tol = 1e-9 * math.sqrt(diag) + 64.0 * _EPS * big
     if not (tol > 0.0 and tol < math.inf):
         return 1e-300
     return tol
@@ -820,7 +864,7 @@ def intersect_pair_kernel(PA, WA, PB, WB, tol, budget, pair, res, nres):  # type
     na = ma - 1
     nb = mb - 1
     if not tol > 0.0:
-        tol = _default_tol(PA, PB)
+        tol = _default_tol(PA, WA, PB, WB)
     # disjoint bounding boxes (widened by tol): nothing to do
     xla = xha = PA[0, 0]
     yla = yha = PA[0, 1]
@@ -1416,3 +1460,510 @@ def intersect_one_kernel(PA, WA, PB, WB, tol, budget):  # type: ignore[no-untype
     res = np.empty((8, RES_COLS))
     res, nres = intersect_pair_kernel(PA, WA, PB, WB, tol, budget, 0, res, 0)
     return res[:nres]
+
+
+# =========================================================================== space (relief scheme)
+# The space intersector's hot path lives here too, beside the planar kernel it calls, so that an
+# edit to either invalidates numba's cache of both (numba keys a cache on its own source file).
+# A space curve is passed as homogeneous rows (w x, w y, w z, w), shape (n + 1, 4), in model
+# coordinates. Result rows (SPACE_COLS columns): [kind, t, u, t1, u1, x, y, z, distance] with kind
+# one of the KIND_* codes (an overlap or an unresolved box holds t0, u0, t1, u1 in t, u, t1, u1).
+
+SPACE_COLS = 9
+STATUS_OK = 0
+STATUS_ARTEFACT = 1
+_SPACE_TANGENT_SIN = 1e-6
+_SPACE_OVERLAP_SAMPLES = 17
+_SPACE_N_FRAMES = 4
+
+
+@njit(cache=True)
+def _space_eval(H, t, wk, p, d):  # type: ignore[no-untyped-def]
+    """Point ``p`` and derivative ``d`` of homogeneous curve ``H`` at ``t`` (de Casteljau)."""
+    n = H.shape[0] - 1
+    for i in range(n + 1):
+        for j in range(4):
+            wk[i, j] = H[i, j]
+    s = 1.0 - t
+    for r in range(1, n):
+        for i in range(n + 1 - r):
+            for j in range(4):
+                wk[i, j] = s * wk[i, j] + t * wk[i + 1, j]
+    w = s * wk[0, 3] + t * wk[1, 3]
+    dw = n * (wk[1, 3] - wk[0, 3])
+    for j in range(3):
+        p[j] = (s * wk[0, j] + t * wk[1, j]) / w
+        d[j] = (n * (wk[1, j] - wk[0, j]) - p[j] * dw) / w
+
+
+@njit(cache=True)
+def _space_dist2(HA, HB, t, u, wka, wkb, pa, da, pb, db):  # type: ignore[no-untyped-def]
+    _space_eval(HA, t, wka, pa, da)
+    _space_eval(HB, u, wkb, pb, db)
+    f = 0.0
+    for j in range(3):
+        f += (pa[j] - pb[j]) ** 2
+    return f
+
+
+@njit(cache=True)
+def _space_polish(HA, HB, t, u, fix_t, fix_u, wka, wkb):  # type: ignore[no-untyped-def]
+    """Minimise |a(t) - b(u)| locally: Gauss-Newton with Levenberg damping, in [0, 1]^2."""
+    pa = np.empty(3)
+    da = np.empty(3)
+    pb = np.empty(3)
+    db = np.empty(3)
+    qa = np.empty(3)
+    qda = np.empty(3)
+    qb = np.empty(3)
+    qdb = np.empty(3)
+    f = _space_dist2(HA, HB, t, u, wka, wkb, pa, da, pb, db)
+    if fix_t and fix_u:
+        return t, u, math.sqrt(f)
+    lam = 0.0
+    for _ in range(80):
+        a11 = 0.0
+        a12 = 0.0
+        a22 = 0.0
+        g1 = 0.0
+        g2 = 0.0
+        for j in range(3):
+            r = pa[j] - pb[j]
+            a11 += da[j] * da[j]
+            a12 -= da[j] * db[j]
+            a22 += db[j] * db[j]
+            g1 += da[j] * r
+            g2 -= db[j] * r
+        accepted = False
+        moved = 0.0
+        for _attempt in range(16):
+            dt = 0.0
+            du = 0.0
+            if not fix_t and not fix_u:
+                m11 = a11 * (1.0 + lam) + 1e-300
+                m22 = a22 * (1.0 + lam) + 1e-300
+                det = m11 * m22 - a12 * a12
+                if det > 0.0:
+                    dt = -(m22 * g1 - a12 * g2) / det
+                    du = -(-a12 * g1 + m11 * g2) / det
+            elif fix_u:
+                if a11 > 0.0:
+                    dt = -g1 / (a11 * (1.0 + lam))
+            else:
+                if a22 > 0.0:
+                    du = -g2 / (a22 * (1.0 + lam))
+            nt = min(max(t + dt, 0.0), 1.0)
+            nu = min(max(u + du, 0.0), 1.0)
+            nf = _space_dist2(HA, HB, nt, nu, wka, wkb, qa, qda, qb, qdb)
+            if nf <= f:
+                moved = abs(nt - t) + abs(nu - u)
+                t = nt
+                u = nu
+                f = nf
+                for j in range(3):
+                    pa[j] = qa[j]
+                    da[j] = qda[j]
+                    pb[j] = qb[j]
+                    db[j] = qdb[j]
+                lam = 0.0 if lam <= 1e-10 else lam * 0.1
+                accepted = True
+                break
+            lam = max(lam * 10.0, 1e-10)
+        if not accepted or f == 0.0 or moved <= 2.0 * _EPS:
+            break
+    return t, u, math.sqrt(f)
+
+
+@njit(cache=True)
+def _space_sin_angle(HA, HB, t, u, wka, wkb):  # type: ignore[no-untyped-def]
+    pa = np.empty(3)
+    da = np.empty(3)
+    pb = np.empty(3)
+    db = np.empty(3)
+    _space_dist2(HA, HB, t, u, wka, wkb, pa, da, pb, db)
+    cx = da[1] * db[2] - da[2] * db[1]
+    cy = da[2] * db[0] - da[0] * db[2]
+    cz = da[0] * db[1] - da[1] * db[0]
+    na = math.sqrt(da[0] ** 2 + da[1] ** 2 + da[2] ** 2)
+    nb = math.sqrt(db[0] ** 2 + db[1] ** 2 + db[2] ** 2)
+    if na == 0.0 or nb == 0.0:
+        return 0.0
+    return math.sqrt(cx * cx + cy * cy + cz * cz) / (na * nb)
+
+
+@njit(cache=True)
+def _space_closest_on(HB, p, u, lo, hi, wkb):  # type: ignore[no-untyped-def]
+    """Gap from ``p`` to ``b`` near ``u`` (Gauss-Newton in ``u``, kept in [lo, hi])."""
+    q = np.empty(3)
+    dq = np.empty(3)
+    for _ in range(40):
+        _space_eval(HB, u, wkb, q, dq)
+        g = 0.0
+        hh = 0.0
+        for j in range(3):
+            g += (q[j] - p[j]) * dq[j]
+            hh += dq[j] * dq[j]
+        if hh == 0.0:
+            break
+        nu = min(max(u - g / hh, lo), hi)
+        if abs(nu - u) <= 1e-16:
+            u = nu
+            break
+        u = nu
+    _space_eval(HB, u, wkb, q, dq)
+    return math.sqrt((q[0] - p[0]) ** 2 + (q[1] - p[1]) ** 2 + (q[2] - p[2]) ** 2)
+
+
+@njit(cache=True)
+def _space_overlap_real(HA, HB, t0, u0, t1, u1, tol, wka, wkb):  # type: ignore[no-untyped-def]
+    pa = np.empty(3)
+    da = np.empty(3)
+    pb = np.empty(3)
+    db = np.empty(3)
+    if math.sqrt(_space_dist2(HA, HB, t0, u0, wka, wkb, pa, da, pb, db)) > tol:
+        return False
+    if math.sqrt(_space_dist2(HA, HB, t1, u1, wka, wkb, pa, da, pb, db)) > tol:
+        return False
+    lo = min(u0, u1)
+    hi = max(u0, u1)
+    for i in range(1, _SPACE_OVERLAP_SAMPLES - 1):
+        s = i / (_SPACE_OVERLAP_SAMPLES - 1.0)
+        _space_eval(HA, t0 + s * (t1 - t0), wka, pa, da)
+        if _space_closest_on(HB, pa, u0 + s * (u1 - u0), lo, hi, wkb) > tol:
+            return False
+    return True
+
+
+@njit(cache=True)
+def _jacobi_eigen3(c):  # type: ignore[no-untyped-def]
+    """Eigenvectors (columns, ascending eigenvalues) of a symmetric 3x3 matrix (Jacobi rotations)."""
+    a = c.copy()
+    v = np.eye(3)
+    for _ in range(50):
+        off = abs(a[0, 1]) + abs(a[0, 2]) + abs(a[1, 2])
+        if off <= 1e-300 or off <= 1e-15 * (abs(a[0, 0]) + abs(a[1, 1]) + abs(a[2, 2])):
+            break
+        for p in range(2):
+            for q in range(p + 1, 3):
+                if a[p, q] == 0.0:
+                    continue
+                theta = (a[q, q] - a[p, p]) / (2.0 * a[p, q])
+                t = (1.0 if theta >= 0.0 else -1.0) / (abs(theta) + math.sqrt(theta * theta + 1.0))
+                cs = 1.0 / math.sqrt(t * t + 1.0)
+                sn = t * cs
+                for k in range(3):
+                    akp = a[k, p]
+                    akq = a[k, q]
+                    a[k, p] = cs * akp - sn * akq
+                    a[k, q] = sn * akp + cs * akq
+                for k in range(3):
+                    apk = a[p, k]
+                    aqk = a[q, k]
+                    a[p, k] = cs * apk - sn * aqk
+                    a[q, k] = sn * apk + cs * aqk
+                for k in range(3):
+                    vkp = v[k, p]
+                    vkq = v[k, q]
+                    v[k, p] = cs * vkp - sn * vkq
+                    v[k, q] = sn * vkp + cs * vkq
+    order = np.argsort(np.array([a[0, 0], a[1, 1], a[2, 2]]))
+    out = np.empty((3, 3))
+    for j in range(3):
+        for k in range(3):
+            out[k, j] = v[k, order[j]]
+    return out
+
+
+@njit(cache=True)
+def _space_direction_frame(P, d, M):  # type: ignore[no-untyped-def]
+    """Frame looking along ``d`` from a centre placed so every point of ``P`` is well in front."""
+    nd = math.sqrt(d[0] ** 2 + d[1] ** 2 + d[2] ** 2)
+    dd = d / nd
+    lo = np.empty(3)
+    hi = np.empty(3)
+    for j in range(3):
+        lo[j] = P[:, j].min()
+        hi[j] = P[:, j].max()
+    centre = 0.5 * (lo + hi)
+    radius = 0.0
+    spread = 0.0
+    for i in range(P.shape[0]):
+        r2 = 0.0
+        dep = 0.0
+        for j in range(3):
+            r2 += (P[i, j] - centre[j]) ** 2
+            dep += (P[i, j] - centre[j]) * dd[j]
+        radius = max(radius, math.sqrt(r2))
+        spread = max(spread, abs(dep))
+    if radius == 0.0:
+        radius = 1.0
+    dist = spread + 2.0 * radius
+    origin = centre - dist * dd
+    helper = np.array([1.0, 0.0, 0.0]) if abs(dd[0]) < 0.8 else np.array([0.0, 1.0, 0.0])
+    e1 = np.cross(helper, dd)
+    e1 = e1 / math.sqrt(e1[0] ** 2 + e1[1] ** 2 + e1[2] ** 2)
+    e2 = np.cross(dd, e1)
+    for j in range(3):
+        M[0, j] = e1[j] / radius
+        M[1, j] = e2[j] / radius
+        M[2, j] = dd[j] / radius
+        M[3, j] = 0.0
+    for i in range(3):
+        M[i, 3] = -(M[i, 0] * origin[0] + M[i, 1] * origin[1] + M[i, 2] * origin[2])
+    M[3, 3] = 1.0
+    return radius
+
+
+@njit(cache=True)
+def _space_frame(mode, P, ref, M):  # type: ignore[no-untyped-def]
+    """Fill ``M`` (local -> frame coordinates) for frame ``mode``; return its scale, or 0 if unusable.
+
+    Mode 0 is the model's own frame (centre at the model origin), usable when every control
+    point lies in front of it (z > 0) with moderate depth ratio: the paper's frame for its
+    curves. Modes 1-3 look along the least-variance axis, a tilted axis, a fixed oblique axis.
+    """
+    m = P.shape[0]
+    if mode == 0:
+        zmin = np.inf
+        zmax = -np.inf
+        big = 0.0
+        for i in range(m):
+            z = P[i, 2] + ref[2]
+            zmin = min(zmin, z)
+            zmax = max(zmax, z)
+            for j in range(3):
+                big = max(big, abs(P[i, j] + ref[j]))
+        if not (zmin > 1e-3 * big and zmax < 100.0 * zmin):
+            return 0.0
+        for i in range(4):
+            for j in range(4):
+                M[i, j] = 1.0 if i == j else 0.0
+        for j in range(3):
+            M[j, 3] = ref[j]
+        return 1.0
+    mean = np.zeros(3)
+    for i in range(m):
+        mean += P[i]
+    mean /= m
+    cov = np.zeros((3, 3))
+    for i in range(m):
+        for j in range(3):
+            for k in range(3):
+                cov[j, k] += (P[i, j] - mean[j]) * (P[i, k] - mean[k])
+    vecs = _jacobi_eigen3(cov)
+    if mode == 1:
+        d = vecs[:, 0].copy()
+    elif mode == 2:
+        d = vecs[:, 0] + 0.6 * vecs[:, 1]
+    else:
+        d = np.array([0.3, -0.5, 0.81])
+    return _space_direction_frame(P, d, M)
+
+
+@njit(cache=True)
+def _space_project(H, M, k, P2, W2):  # type: ignore[no-untyped-def]
+    """psi(phi(M H)): the planar image of a curve, as Cartesian points and weights. False if behind O."""
+    n = H.shape[0]
+    for i in range(n):
+        x = 0.0
+        y = 0.0
+        z = 0.0
+        w = 0.0
+        for j in range(4):
+            x += M[0, j] * H[i, j]
+            y += M[1, j] * H[i, j]
+            z += M[2, j] * H[i, j]
+            w += M[3, j] * H[i, j]
+        # relief phi_k: (x, y, z, w) -> ((1+k)x, (1+k)y, (1+k)z, z + k w); then psi: drop to (X, Y, Z)
+        rx = (1.0 + k) * x
+        ry = (1.0 + k) * y
+        rz = (1.0 + k) * z
+        if not (rz > 0.0) or not (z + k * w > 0.0):
+            return False
+        P2[i, 0] = rx / rz
+        P2[i, 1] = ry / rz
+        W2[i] = rz
+    return True
+
+
+@njit(cache=True)
+def _space_lipschitz(P2a, W2a, P2b, W2b, HA, HB, M):  # type: ignore[no-untyped-def]
+    """Bound of |D psi| over the hull of both curves' control points in frame coordinates."""
+    zmin = np.inf
+    r2 = 0.0
+    for H, P2 in ((HA, P2a), (HB, P2b)):
+        for i in range(H.shape[0]):
+            w = H[i, 3]
+            z = 0.0
+            for j in range(4):
+                z += M[2, j] * H[i, j]
+            zmin = min(zmin, z / w)
+            r2 = max(r2, P2[i, 0] ** 2 + P2[i, 1] ** 2)
+    return math.sqrt(1.0 + r2) / zmin
+
+
+@njit(cache=True)
+def _space_add(out, n, kind, t, u, t1, u1, x, y, z, dist):  # type: ignore[no-untyped-def]
+    if n >= out.shape[0]:
+        bigger = np.empty((2 * out.shape[0] + 4, SPACE_COLS))
+        bigger[:n] = out[:n]
+        out = bigger
+    out[n, 0] = kind
+    out[n, 1] = t
+    out[n, 2] = u
+    out[n, 3] = t1
+    out[n, 4] = u1
+    out[n, 5] = x
+    out[n, 6] = y
+    out[n, 7] = z
+    out[n, 8] = dist
+    return out, n + 1
+
+
+@njit(cache=True)
+def space_pair_kernel(HA0, HB0, tol, budget, k):  # type: ignore[no-untyped-def]
+    """Intersect two space rational curves by the relief scheme.
+
+    ``HA0``, ``HB0``: homogeneous rows ``(w x, w y, w z, w)`` in model coordinates; ``tol`` a
+    distance in model units (``<= 0`` asks for the default tolerance of both curves); ``budget``
+    the planar clipping budget; ``k`` the span of the relief perspective. Returns ``(rows, nrows, status)``.
+    """
+    na = HA0.shape[0]
+    nb = HB0.shape[0]
+    PA = np.empty((na, 3))
+    PB = np.empty((nb, 3))
+    for i in range(na):
+        for j in range(3):
+            PA[i, j] = HA0[i, j] / HA0[i, 3]
+    for i in range(nb):
+        for j in range(3):
+            PB[i, j] = HB0[i, j] / HB0[i, 3]
+    big0 = max(np.abs(PA).max(), np.abs(PB).max())
+    PA0 = PA.copy()
+    PB0 = PB.copy()
+    ref = PA[0].copy()
+    # local coordinates: an exact shift for nearby values (Sterbenz), parameters unchanged
+    HA = np.empty((na, 4))
+    HB = np.empty((nb, 4))
+    for i in range(na):
+        for j in range(3):
+            PA[i, j] -= ref[j]
+            HA[i, j] = PA[i, j] * HA0[i, 3]
+        HA[i, 3] = HA0[i, 3]
+    for i in range(nb):
+        for j in range(3):
+            PB[i, j] -= ref[j]
+            HB[i, j] = PB[i, j] * HB0[i, 3]
+        HB[i, 3] = HB0[i, 3]
+    allp = np.empty((na + nb, 3))
+    allp[:na] = PA
+    allp[na:] = PB
+    big = np.abs(allp).max()
+    if not (tol > 0.0):
+        # relief_cad.tolerances.default_tolerance of both curves (their own sampled extent)
+        tol = _default_tol(PA0, HA0[:, 3].copy(), PB0, HB0[:, 3].copy())
+    meet = max(1e3 * _EPS * big, 16.0 * _EPS * big0, 1e-3 * tol)
+    wka = np.empty((na, 4))
+    wkb = np.empty((nb, 4))
+    M = np.empty((4, 4))
+    P2a = np.empty((na, 2))
+    W2a = np.empty(na)
+    P2b = np.empty((nb, 2))
+    W2b = np.empty(nb)
+    out = np.empty((8, SPACE_COLS))
+    nout = 0
+    for mode in range(_SPACE_N_FRAMES):
+        scale = _space_frame(mode, allp, ref, M)
+        if scale == 0.0:
+            continue
+        if not _space_project(HA, M, k, P2a, W2a) or not _space_project(HB, M, k, P2b, W2b):
+            continue
+        ptol = _space_lipschitz(P2a, W2a, P2b, W2b, HA, HB, M) * (tol / scale) * (1.0 + 1e-6)
+        res = np.empty((16, RES_COLS))
+        res, nres = intersect_pair_kernel(P2a, W2a, P2b, W2b, ptol, budget, 0, res, 0)
+        artefact = False
+        nout = 0
+        for r in range(nres):
+            kind = int(res[r, 1])
+            if kind == KIND_OVERLAP:
+                if _space_overlap_real(HA, HB, res[r, 2], res[r, 3], res[r, 4], res[r, 5], tol, wka, wkb):
+                    out, nout = _space_add(out, nout, KIND_OVERLAP, res[r, 2], res[r, 3], res[r, 4],
+                                           res[r, 5], 0.0, 0.0, 0.0, 0.0)
+                else:
+                    artefact = True
+                    break
+            elif kind == KIND_UNRESOLVED:
+                out, nout = _space_add(out, nout, KIND_UNRESOLVED, res[r, 2], res[r, 3], res[r, 4], res[r, 5],
+                                 0.0, 0.0, 0.0, 0.0)
+        if artefact:
+            continue
+        pa = np.empty(3)
+        da = np.empty(3)
+        pb = np.empty(3)
+        db = np.empty(3)
+        qe = np.empty(3)
+        dqe = np.empty(3)
+        for r in range(nres):
+            kind = int(res[r, 1])
+            if kind != KIND_CROSSING and kind != KIND_TANGENT:
+                continue
+            t = res[r, 2]
+            u = res[r, 3]
+            fix_t = False
+            fix_u = False
+            for end in (0.0, 1.0):
+                if t == end or abs(t - end) < 1e-9:
+                    if math.sqrt(_space_dist2(HA, HB, end, u, wka, wkb, pa, da, pb, db)) <= tol:
+                        t = end
+                        fix_t = True
+                if u == end or abs(u - end) < 1e-9:
+                    if math.sqrt(_space_dist2(HA, HB, t, end, wka, wkb, pa, da, pb, db)) <= tol:
+                        u = end
+                        fix_u = True
+            t, u, gap = _space_polish(HA, HB, t, u, fix_t, fix_u, wka, wkb)
+            if gap > tol:
+                continue
+            # a point inside an overlap, or at the place where one ends (a closed curve returns to
+            # it with another parameter), is part of that overlap
+            inside = False
+            _space_dist2(HA, HB, t, u, wka, wkb, pa, da, pb, db)
+            for q in range(nout):
+                if out[q, 0] == KIND_OVERLAP:
+                    lo_u = min(out[q, 2], out[q, 4])
+                    hi_u = max(out[q, 2], out[q, 4])
+                    if out[q, 1] - 1e-9 <= t <= out[q, 3] + 1e-9 and lo_u - 1e-9 <= u <= hi_u + 1e-9:
+                        inside = True
+                    for te in (out[q, 1], out[q, 3]):
+                        _space_eval(HA, te, wka, qe, dqe)
+                        gap_e = 0.0
+                        for j in range(3):
+                            gap_e += (qe[j] - pa[j]) ** 2
+                        if math.sqrt(gap_e) <= tol:
+                            inside = True
+            if inside:
+                continue
+            ckind = KIND_TANGENT
+            if gap <= meet and _space_sin_angle(HA, HB, t, u, wka, wkb) > _SPACE_TANGENT_SIN:
+                ckind = KIND_CROSSING
+            # merge repeated finds of one contact (tangent finds agree only to ~sqrt(eps))
+            dup = -1
+            for q in range(nout):
+                if out[q, 0] == KIND_CROSSING or out[q, 0] == KIND_TANGENT:
+                    near = 1e-10
+                    if ckind == KIND_TANGENT and out[q, 0] == KIND_TANGENT:
+                        near = 1e-6
+                    if abs(out[q, 1] - t) <= near and abs(out[q, 2] - u) <= near:
+                        dup = q
+            _space_dist2(HA, HB, t, u, wka, wkb, pa, da, pb, db)
+            if dup >= 0:
+                if gap < out[dup, 8]:
+                    out[dup, 1] = t
+                    out[dup, 2] = u
+                    for j in range(3):
+                        out[dup, 5 + j] = 0.5 * (pa[j] + pb[j]) + ref[j]
+                    out[dup, 8] = gap
+                continue
+            out, nout = _space_add(out, nout, ckind, t, u, t, u, 0.5 * (pa[0] + pb[0]) + ref[0],
+                             0.5 * (pa[1] + pb[1]) + ref[1], 0.5 * (pa[2] + pb[2]) + ref[2], gap)
+        return out, nout, STATUS_OK
+    return out, 0, STATUS_ARTEFACT

@@ -327,9 +327,9 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
         result: IntersectionList = intersect_space(a, b, tol=tol, budget=budget)
         return result
     if b is None:
-        ftol = default_tolerance(a.control_points) if tol is None else _check_tol(tol)
+        ftol = default_tolerance(a) if tol is None else _check_tol(tol)
         return _finish(_self_planar(a.control_points, a.weights, ftol, nbudget), on_budget)
-    # tol <= 0 asks the kernel for default_tolerance(a.control_points, b.control_points)
+    # tol <= 0 asks the kernel for default_tolerance(a, b)
     ftol = -1.0 if tol is None else _check_tol(tol)
     return _finish(_planar(a.control_points, a.weights, b.control_points, b.weights, ftol, nbudget,
                            trusted=True), on_budget)
@@ -388,7 +388,7 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     _check_on_budget(on_budget)
     nbudget = _check_budget(budget)
     pts = curve.control_points
-    ftol = default_tolerance(pts, p[None, :]) if tol is None else _check_tol(tol)
+    ftol = default_tolerance(curve, p[None, :]) if tol is None else _check_tol(tol)
     s = (pts - p) @ d / dd
     lo = float(min(s.min(), 0.0))
     hi = float(max(s.max(), 0.0))

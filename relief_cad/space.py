@@ -42,8 +42,14 @@ from typing import Literal
 
 import numpy as np
 
-from ._kernels import KIND_OVERLAP, KIND_UNRESOLVED
-from ._kernels_space import SPACE_COLS, STATUS_ARTEFACT, _frame, space_pair_kernel
+from ._kernels import (
+    KIND_OVERLAP,
+    KIND_UNRESOLVED,
+    SPACE_COLS,
+    STATUS_ARTEFACT,
+    _space_frame,
+    space_pair_kernel,
+)
 from ._types import FloatArray
 from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError, ToleranceError
@@ -115,7 +121,7 @@ def _first_frame(points: FloatArray) -> ReliefFrame:
     local = np.ascontiguousarray(points - ref)
     m = np.empty((4, 4))
     for mode, name in enumerate(_FRAME_NAMES):
-        scale = float(_frame(mode, local, ref, m))
+        scale = float(_space_frame(mode, local, ref, m))
         if scale > 0.0:
             shift = np.eye(4)
             shift[:3, 3] = -ref
@@ -165,7 +171,7 @@ def relief_scheme(
     pts = np.vstack([a3.control_points, b3.control_points])
     if frame is None:
         frame = _first_frame(pts)
-    t = default_tolerance(pts) if tol is None else float(tol)
+    t = default_tolerance(a3, b3) if tol is None else float(tol)
     a_f = a3.transformed(frame.matrix)
     b_f = b3.transformed(frame.matrix)
     phi = ReliefPerspective(k)
@@ -259,9 +265,9 @@ def _self_rows(curve: RationalBezier, tol: float, budget: int, k: float) -> Floa
     return np.array(keep)
 
 
-def _check_tol(tol: float | None, pts: FloatArray) -> float:
+def _check_tol(tol: float | None, curve: RationalBezier) -> float:
     if tol is None:
-        return default_tolerance(pts)
+        return default_tolerance(curve)
     try:
         value = float(tol)
     except (TypeError, ValueError) as exc:
@@ -332,10 +338,10 @@ def intersect_space(
     a3 = a if a.dim == 3 else a.embedded(3)
     nbudget = DEFAULT_BUDGET if budget is None else int(budget)
     if b is None:
-        rows = _self_rows(a3, _check_tol(tol, a3.control_points), nbudget, k)
+        rows = _self_rows(a3, _check_tol(tol, a3), nbudget, k)
     else:
         b3 = b if b.dim == 3 else b.embedded(3)
-        tol_v = -1.0 if tol is None else _check_tol(tol, a3.control_points)  # -1: kernel default
+        tol_v = -1.0 if tol is None else _check_tol(tol, a3)  # -1: kernel default
         rows = _pair(a3.homogeneous, b3.homogeneous, tol_v, nbudget, k)
     items, boxes = _rows_to_results(rows)
     items.sort(key=lambda r: r.t if isinstance(r, Intersection) else r.t[0])

@@ -1,16 +1,18 @@
 r"""Named default tolerances (all documented, all overridable per call).
 
 Distances are in model units. When a caller passes ``tol=None`` the
-intersectors use :func:`default_tolerance` of the inputs' control points:
+intersectors use :func:`default_tolerance` of the input curves:
 
 .. math::
 
     \mathrm{tol} = \mathrm{RELATIVE\_TOLERANCE} \cdot \mathrm{size}
         + \mathrm{ROUNDING\_ULPS} \cdot \varepsilon \cdot \max |x|
 
-where ``size`` is the diagonal of the joint bounding box of the control
-points and ``max |x|`` their largest absolute coordinate (the second term keeps
-the tolerance above the rounding noise of curves far from the origin).
+where ``size`` is the diagonal of the joint bounding box of the *curves themselves*
+(sampled at ``2 (n + 1) + 1`` parameters each; the control polygon of an ill-conditioned
+curve can be a million times larger than the curve) and ``max |x|`` the largest absolute
+control-point coordinate (the second term keeps the tolerance above the rounding noise of
+the data: curves far from the origin, or evaluated from huge control points).
 
 >>> import numpy as np
 >>> round(default_tolerance(np.array([[0.0, 0.0], [3.0, 4.0]])), 12)
@@ -21,15 +23,19 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable
+from typing import TYPE_CHECKING, Union
 
 import numpy as np
 
 from ._types import FloatArray
 
+if TYPE_CHECKING:
+    from .curves import RationalBezier
+
 __all__ = [
+    "PARAMETER_TOLERANCE",
     "RELATIVE_TOLERANCE",
     "ROUNDING_ULPS",
-    "PARAMETER_TOLERANCE",
     "default_tolerance",
 ]
 
@@ -44,32 +50,52 @@ PARAMETER_TOLERANCE: float = 1e-15
 
 _EPS = float(np.finfo(np.float64).eps)
 
+CurveOrPoints = Union["RationalBezier", FloatArray, Iterable[FloatArray]]
 
-def default_tolerance(*point_sets: FloatArray | Iterable[FloatArray]) -> float:
-    """Return the default distance tolerance for curves with these control points.
+
+def default_tolerance(*inputs: CurveOrPoints) -> float:
+    """Return the default distance tolerance for these curves (or point sets).
 
     Parameters
     ----------
-    *point_sets : ndarray, shape (m, d)
-        Control points (Cartesian) of every curve taking part.
+    *inputs : RationalBezier or ndarray of shape (m, d)
+        Every curve taking part; a plain array counts as points (its extent and its
+        coordinates both enter as they are).
 
     Returns
     -------
     float
         A positive distance in model units (see the module docstring). A set of
-        coincident points gets the rounding term alone, or ``1e-300`` at the origin.
+        coincident points at the origin gets ``1e-300``.
 
     Examples
     --------
     >>> default_tolerance(np.zeros((2, 2)))
     1e-300
+    >>> from relief_cad import RationalBezier
+    >>> steep = RationalBezier([[0, 0], [1, 1e6], [2, -1e6], [3, 0]])  # control polygon >> curve
+    >>> default_tolerance(steep) < 1e-9 * 1e6
+    True
     """
-    arrays = [np.asarray(p, dtype=np.float64).reshape(-1, np.asarray(p).shape[-1]) for p in point_sets]
-    stacked = np.vstack(arrays)
-    lo = stacked.min(axis=0)
-    hi = stacked.max(axis=0)
-    size = float(np.linalg.norm(hi - lo))
-    big = float(np.max(np.abs(stacked)))
+    from .curves import RationalBezier
+
+    extents: list[FloatArray] = []
+    coords: list[FloatArray] = []
+    for item in inputs:
+        if isinstance(item, RationalBezier):
+            samples = item.evaluate(np.linspace(0.0, 1.0, 2 * (item.degree + 1) + 1))
+            extents.append(samples)
+            coords.append(item.control_points)
+        else:
+            arr = np.asarray(item, dtype=np.float64)
+            arr = arr.reshape(-1, arr.shape[-1])
+            extents.append(arr)
+            coords.append(arr)
+    dim = max(a.shape[1] for a in extents)
+    pad = [np.hstack([a, np.zeros((a.shape[0], dim - a.shape[1]))]) for a in extents]
+    stacked = np.vstack(pad)
+    size = float(np.linalg.norm(stacked.max(axis=0) - stacked.min(axis=0)))
+    big = max(float(np.max(np.abs(c))) for c in coords)
     tol = RELATIVE_TOLERANCE * size + ROUNDING_ULPS * _EPS * big
     if not math.isfinite(tol) or tol <= 0.0:
         return 1e-300

@@ -275,6 +275,43 @@ def test_kernel_default_tolerance_matches_tolerances_module(seed: int) -> None:
     from relief_cad.tolerances import default_tolerance
 
     rng = np.random.default_rng(seed)
-    pa = rng.normal(size=(4, 2)) * 10.0 ** rng.integers(-5, 6) + rng.normal() * 1e4
-    pb = rng.normal(size=(3, 2)) * 10.0 ** rng.integers(-5, 6)
-    assert _default_tol(pa, pb) == pytest.approx(default_tolerance(pa, pb), rel=1e-12)
+    for dim in (2, 3):
+        pa = rng.normal(size=(4, dim)) * 10.0 ** rng.integers(-5, 6) + rng.normal() * 1e4
+        pb = rng.normal(size=(3, dim)) * 10.0 ** rng.integers(-5, 6)
+        wa = rng.uniform(0.2, 5.0, size=4)
+        wb = np.ones(3)
+        expected = default_tolerance(RationalBezier(pa, wa), RationalBezier(pb, wb))
+        assert _default_tol(pa, wa, pb, wb) == pytest.approx(expected, rel=1e-12)
+
+
+def test_default_tolerance_follows_the_curve_not_its_control_polygon() -> None:
+    """A degree-20 Chebyshev curve spans [-1, 1]^2 but its control polygon reaches |y| ~ 1e5."""
+    from fractions import Fraction
+    from math import comb
+
+    from relief_cad.tolerances import default_tolerance
+
+    n = 20
+    # T_20 in the power basis (exact integers), then x = 2t - 1, then Bernstein coefficients
+    t_prev, t_cur = [1], [0, 1]
+    for _ in range(n - 1):
+        nxt = [0] * (len(t_cur) + 1)
+        for i, c in enumerate(t_cur):
+            nxt[i + 1] += 2 * c
+        for i, c in enumerate(t_prev):
+            nxt[i] -= c
+        t_prev, t_cur = t_cur, nxt
+    power_t = [Fraction(0)] * (n + 1)
+    for i, c in enumerate(t_cur):  # c x^i with x = 2t - 1
+        for j in range(i + 1):
+            power_t[j] += c * comb(i, j) * Fraction(2) ** j * Fraction(-1) ** (i - j)
+    bern = [float(sum(Fraction(comb(k, i), comb(n, i)) * power_t[i] for i in range(k + 1))) for k in range(n + 1)]
+    curve = RationalBezier(np.column_stack([np.linspace(-1, 1, n + 1), bern]))
+    big = np.abs(curve.control_points).max()
+    assert big > 1e4
+    tol = default_tolerance(curve)
+    polygon_sized = 1e-9 * np.ptp(curve.control_points[:, 1])  # what sizing by the control polygon gave
+    assert tol < 0.05 * polygon_sized
+    # exactly: 1e-9 x the curve's own extent (its diagonal is 2 sqrt 2) + the data's rounding level
+    expected = 1e-9 * 2 * np.sqrt(2) + 64 * np.finfo(float).eps * big
+    assert tol == pytest.approx(expected, rel=1e-2)  # the sampled extent is a little inside the true one

@@ -311,7 +311,7 @@ def test_overlaps_survive_scaling_and_translation(scale: float, shift: np.ndarra
 def test_kernel_projection_is_psi_of_phi_from_the_foundation_objects() -> None:
     """The compiled hot path projects exactly as the paper's explicit maps do."""
     from relief_cad import ReliefPerspective, central_projection
-    from relief_cad._kernels_space import _project
+    from relief_cad._kernels import _space_project as _project
 
     rng = np.random.default_rng(3)
     for k in (0.5, 2.0, 7.0):
