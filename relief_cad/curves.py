@@ -45,7 +45,7 @@ def _as_float_array(value: Any, name: str) -> FloatArray:
     if isinstance(value, RationalBezier):
         raise InputTypeError(f"{name} should be an array of numbers, not a RationalBezier")
     try:
-        arr = np.array(value, dtype=np.float64)
+        arr = np.array(value, dtype=np.float64, order="C")
     except (TypeError, ValueError) as exc:
         raise InputTypeError(
             f"{name} should be an array of real numbers, not {type(value).__name__}"
