@@ -1820,6 +1820,92 @@ def _space_add(out, n, kind, t, u, t1, u1, x, y, z, dist):  # type: ignore[no-un
     return out, n + 1
 
 
+@njit(cache=True, error_model="numpy")
+def _space_half(H, L, R):  # type: ignore[no-untyped-def]
+    """Split homogeneous rows ``H`` at t = 1/2 into ``L`` and ``R`` (de Casteljau)."""
+    n = H.shape[0] - 1
+    wk = H.copy()
+    for j in range(4):
+        L[0, j] = wk[0, j]
+        R[n, j] = wk[n, j]
+    for r in range(1, n + 1):
+        for i in range(n + 1 - r):
+            for j in range(4):
+                wk[i, j] = 0.5 * (wk[i, j] + wk[i + 1, j])
+        for j in range(4):
+            L[r, j] = wk[0, j]
+            R[n - r, j] = wk[n - r, j]
+
+
+@njit(cache=True, error_model="numpy")
+def _space_box(H, box):  # type: ignore[no-untyped-def]
+    """Box ``[lo x, lo y, lo z, hi x, hi y, hi z]`` of the control points (contains the curve)."""
+    for j in range(3):
+        box[j] = math.inf
+        box[3 + j] = -math.inf
+    for i in range(H.shape[0]):
+        for j in range(3):
+            x = H[i, j] / H[i, 3]
+            box[j] = min(box[j], x)
+            box[3 + j] = max(box[3 + j], x)
+
+
+@njit(cache=True, error_model="numpy")
+def _space_separated(HA, HB, tol, max_depth):  # type: ignore[no-untyped-def]
+    """True when boxes of sub-curves (halving both, depth <= max_depth) prove a gap wider than tol.
+
+    A cheap pre-pass before the relief scheme: two space curves that stay apart need no
+    projection at all (their projections may well cross). False means "not proven apart".
+    """
+    na = HA.shape[0]
+    nb = HB.shape[0]
+    size = 4 * max_depth + 8
+    stack_a = np.empty((size, na, 4))
+    stack_b = np.empty((size, nb, 4))
+    depth = np.empty(size, dtype=np.int64)
+    stack_a[0] = HA
+    stack_b[0] = HB
+    depth[0] = 0
+    top = 1
+    ca = np.empty((na, 4))
+    cb = np.empty((nb, 4))
+    la = np.empty((na, 4))
+    ra = np.empty((na, 4))
+    lb = np.empty((nb, 4))
+    rb = np.empty((nb, 4))
+    ba = np.empty(6)
+    bb = np.empty(6)
+    while top > 0:
+        top -= 1
+        ca[:, :] = stack_a[top]
+        cb[:, :] = stack_b[top]
+        d = depth[top]
+        _space_box(ca, ba)
+        _space_box(cb, bb)
+        apart = False
+        for j in range(3):
+            if ba[j] > bb[3 + j] + tol or bb[j] > ba[3 + j] + tol:
+                apart = True
+        if apart:
+            continue
+        if d >= max_depth or top + 4 > size:
+            return False
+        _space_half(ca, la, ra)
+        _space_half(cb, lb, rb)
+        stack_a[top] = la
+        stack_b[top] = lb
+        stack_a[top + 1] = la
+        stack_b[top + 1] = rb
+        stack_a[top + 2] = ra
+        stack_b[top + 2] = lb
+        stack_a[top + 3] = ra
+        stack_b[top + 3] = rb
+        for q in range(4):
+            depth[top + q] = d + 1
+        top += 4
+    return True
+
+
 @njit(cache=True)
 def space_pair_kernel(HA0, HB0, tol, budget, k):  # type: ignore[no-untyped-def]
     """Intersect two space rational curves by the relief scheme.
@@ -1863,6 +1949,9 @@ def space_pair_kernel(HA0, HB0, tol, budget, k):  # type: ignore[no-untyped-def]
         # relief_cad.tolerances.default_tolerance of both curves (their own sampled extent)
         tol = _default_tol(PA0, HA0[:, 3].copy(), PB0, HB0[:, 3].copy())
     meet = max(1e3 * _EPS * big, 16.0 * _EPS * big0, 1e-3 * tol)
+    out = np.empty((8, SPACE_COLS))
+    if _space_separated(HA, HB, tol, 5):
+        return out, 0, STATUS_OK
     wka = np.empty((na, 4))
     wkb = np.empty((nb, 4))
     M = np.empty((4, 4))
@@ -1870,7 +1959,6 @@ def space_pair_kernel(HA0, HB0, tol, budget, k):  # type: ignore[no-untyped-def]
     W2a = np.empty(na)
     P2b = np.empty((nb, 2))
     W2b = np.empty(nb)
-    out = np.empty((8, SPACE_COLS))
     nout = 0
     for mode in range(_SPACE_N_FRAMES):
         scale = _space_frame(mode, allp, ref, M)
