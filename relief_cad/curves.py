@@ -264,17 +264,29 @@ class RationalBezier:
     # ------------------------------------------------------------------ properties
     @property
     def degree(self) -> int:
-        """The degree ``n`` (number of control points minus one)."""
+        """The degree ``n`` (number of control points minus one).
+
+        >>> RationalBezier([[0, 0], [1, 1], [2, 0]]).degree
+        2
+        """
         return int(self._h.shape[0] - 1)
 
     @property
     def dim(self) -> int:
-        """The dimension ``d`` of the space the curve lies in (2 or 3)."""
+        """The dimension ``d`` of the space the curve lies in (2 or 3).
+
+        >>> RationalBezier([[0, 0, 0], [1, 1, 1]]).dim
+        3
+        """
         return int(self._h.shape[1] - 1)
 
     @property
     def control_points(self) -> FloatArray:
-        """Control points, shape ``(n + 1, d)``, read-only."""
+        """Control points, shape ``(n + 1, d)``, read-only.
+
+        >>> RationalBezier([[0, 0], [2, 4]], [1.0, 2.0]).control_points.tolist()
+        [[0.0, 0.0], [2.0, 4.0]]
+        """
         if self._points is None:
             pts = self._h[:, :-1] / self._h[:, -1:]
             pts.flags.writeable = False
@@ -283,7 +295,11 @@ class RationalBezier:
 
     @property
     def weights(self) -> FloatArray:
-        """Weights, shape ``(n + 1,)``, read-only, all > 0."""
+        """Weights, shape ``(n + 1,)``, read-only, all > 0.
+
+        >>> RationalBezier([[0, 0], [2, 4]]).weights.tolist()
+        [1.0, 1.0]
+        """
         if self._weights is None:
             w = self._h[:, -1].copy()
             w.flags.writeable = False
@@ -292,12 +308,20 @@ class RationalBezier:
 
     @property
     def homogeneous(self) -> FloatArray:
-        """Homogeneous control points ``[w_i V_i, w_i]``, shape ``(n + 1, d + 1)``, read-only."""
+        """Homogeneous control points ``[w_i V_i, w_i]``, shape ``(n + 1, d + 1)``, read-only.
+
+        >>> RationalBezier([[0, 0], [2, 4]], [1.0, 2.0]).homogeneous.tolist()
+        [[0.0, 0.0, 1.0], [4.0, 8.0, 2.0]]
+        """
         return self._h
 
     @property
     def is_polynomial(self) -> bool:
-        """True when all weights are equal (the curve is a polynomial Bézier curve)."""
+        """True when all weights are equal (the curve is a polynomial Bézier curve).
+
+        >>> RationalBezier([[0, 0], [1, 1]], [2.0, 2.0]).is_polynomial
+        True
+        """
         if self._polynomial is None:
             w = self._h[:, -1]
             self._polynomial = bool(np.all(w == w[0]))

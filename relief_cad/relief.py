@@ -372,6 +372,12 @@ def relief_of_lift(curve: RationalBezier, k: float) -> RationalBezier:
 class NeutralPlaneFrame:
     """A frame in which a space curve has the paper's form ``Q``.
 
+    >>> from relief_cad import RationalBezier, preimage_of_lift
+    >>> q = preimage_of_lift(RationalBezier([[0, 0], [1, 1]], [1.0, 2.0]), 2.0)
+    >>> frame = find_neutral_plane(q, k=2.0)
+    >>> frame.k, frame.planar.degree, bool(abs(frame.plane_normal @ frame.plane_normal - 1) < 1e-12)
+    (2.0, 1, True)
+
     Attributes
     ----------
     plane_point : ndarray, shape (3,)

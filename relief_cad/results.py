@@ -37,6 +37,11 @@ ContactKind = Literal["crossing", "tangent"]
 class Intersection:
     """An isolated common point of two curves (or a double point of one).
 
+    >>> from relief_cad import RationalBezier, intersect
+    >>> hit = intersect(RationalBezier([[0, 0], [2, 2]]), RationalBezier([[0, 2], [2, 0]]))[0]
+    >>> hit.t, hit.u, hit.point.tolist(), hit.kind
+    (0.5, 0.5, [1.0, 1.0], 'crossing')
+
     Attributes
     ----------
     t : float
@@ -72,6 +77,11 @@ class Intersection:
 class Overlap:
     """A stretch along which two curves coincide.
 
+    >>> from relief_cad import RationalBezier, intersect
+    >>> line = RationalBezier([[0, 0], [4, 0]])
+    >>> intersect(line, RationalBezier([[3, 0], [1, 0]]))
+    [Overlap(t=(0.25, 0.75), u=(1.0, 0.0), kind='overlap')]
+
     ``a(t[0]) == b(u[0])`` and ``a(t[1]) == b(u[1])`` with ``t[0] < t[1]``; so
     ``u[0] > u[1]`` when ``b`` runs against ``a``.
 
@@ -91,7 +101,11 @@ class Overlap:
 
     @property
     def reversed_direction(self) -> bool:
-        """True when the second curve runs against the first along the overlap."""
+        """True when the second curve runs against the first along the overlap.
+
+        >>> Overlap(t=(0.25, 0.75), u=(0.0, 1.0)).reversed_direction
+        False
+        """
         return self.u[1] < self.u[0]
 
 
@@ -100,7 +114,11 @@ Result = Union[Intersection, Overlap]
 
 @dataclass(frozen=True)
 class ParameterBox:
-    """A parameter rectangle ``[t0, t1] x [u0, u1]`` left unresolved by a budget."""
+    """A parameter rectangle ``[t0, t1] x [u0, u1]`` left unresolved by a budget.
+
+    >>> ParameterBox(0.0, 0.5, 0.25, 1.0).t1
+    0.5
+    """
 
     t0: float
     t1: float
@@ -127,15 +145,27 @@ class IntersectionList(list[Result]):
 
     @property
     def complete(self) -> bool:
-        """True when no budget ran out (every parameter box was resolved)."""
+        """True when no budget ran out (every parameter box was resolved).
+
+        >>> IntersectionList([], unresolved=[ParameterBox(0.0, 1.0, 0.0, 1.0)]).complete
+        False
+        """
         return not self.unresolved
 
     @property
     def points(self) -> list[Intersection]:
-        """The isolated points only."""
+        """The isolated points only.
+
+        >>> IntersectionList([Overlap(t=(0.0, 1.0), u=(0.0, 1.0))]).points
+        []
+        """
         return [r for r in self if isinstance(r, Intersection)]
 
     @property
     def overlaps(self) -> list[Overlap]:
-        """The overlaps only."""
+        """The overlaps only.
+
+        >>> len(IntersectionList([Overlap(t=(0.0, 1.0), u=(0.0, 1.0))]).overlaps)
+        1
+        """
         return [r for r in self if isinstance(r, Overlap)]

@@ -67,6 +67,11 @@ DEFAULT_BUDGET = 20000
 class ReliefFrame:
     """A projection frame: model coordinates -> frame coordinates (centre O at the origin).
 
+    >>> from relief_cad import RationalBezier
+    >>> curve = RationalBezier([[0, 0, 1], [1, 1, 2]])   # already in front of O: the model's frame
+    >>> relief_scheme(curve, curve.reversed()).frame.name
+    'model'
+
     Attributes
     ----------
     matrix : ndarray, shape (4, 4)
@@ -85,6 +90,11 @@ class ReliefFrame:
 @dataclass(frozen=True)
 class ReliefScheme:
     """The intermediate curves of the scheme for one frame (for figures, teaching and debugging).
+
+    >>> from relief_cad import RationalBezier
+    >>> s = relief_scheme(RationalBezier([[0, 0, 1], [1, 1, 2]]), RationalBezier([[1, 0, 1], [0, 1, 2]]))
+    >>> s.a_relief.dim, s.a_image.dim, s.perspective.k
+    (3, 2, 2.0)
 
     Attributes
     ----------
