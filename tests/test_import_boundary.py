@@ -42,3 +42,12 @@ def test_core_sources_import_only_stdlib_numpy_numba() -> None:
                 if top == "relief_cad" and name.startswith("relief_cad.cad"):
                     offenders.append(f"{path.name}: {name}")
     assert not offenders, offenders
+
+
+def test_every_exported_name_exists() -> None:
+    import relief_cad
+    import relief_cad.cad
+
+    for module in (relief_cad, relief_cad.cad):
+        missing = [name for name in module.__all__ if not hasattr(module, name)]
+        assert not missing, f"{module.__name__}.__all__ names missing attributes: {missing}"

@@ -23,6 +23,16 @@ with the install hint ``pip install "relief-cad[cad]"``.
 from __future__ import annotations
 
 from .api import intersect, intersections, planar_curves, segments, split
+from .compare import (
+    Comparison,
+    Disagreement,
+    Match,
+    Verdict,
+    arbitrate_overlap,
+    arbitrate_point,
+    compare,
+)
+from .occt import occt_intersections
 from .ocp import Segment, edges_of
 from .results import EdgeIntersection, EdgeOverlap, EdgeResult
 
