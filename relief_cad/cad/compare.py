@@ -216,7 +216,12 @@ class ExactCurve:
         return fallback
 
     def value(self, t: Any) -> list[Any]:
-        """Return the point at edge parameter ``t`` (global coordinates) as 3 mpf numbers."""
+        """Return the point at edge parameter ``t`` (global coordinates) as 3 mpf numbers.
+
+        >>> import build123d as bd
+        >>> [float(x) for x in ExactCurve(bd.Line((0, 0), (3, 4))).value(2.5)]
+        [1.5, 2.0, 0.0]
+        """
         p: list[Any] = self._eval(self.mp.mpf(t))
         if self._identity:
             return p
@@ -224,7 +229,12 @@ class ExactCurve:
         return [m[i][0] * p[0] + m[i][1] * p[1] + m[i][2] * p[2] + m[i][3] for i in range(3)]
 
     def derivative(self, t: Any) -> list[Any]:
-        """Return ``dP/dt`` at ``t`` (central difference at high precision)."""
+        """Return ``dP/dt`` at ``t`` (central difference at high precision).
+
+        >>> import build123d as bd
+        >>> [round(float(x), 12) for x in ExactCurve(bd.Line((0, 0), (3, 4))).derivative(1.0)]
+        [0.6, 0.8, 0.0]
+        """
         mp = self.mp
         h = mp.mpf(10) ** (-(mp.dps // 2 - 2)) * max(mp.mpf(1), abs(mp.mpf(self.last - self.first)))
         t = mp.mpf(t)
@@ -233,7 +243,13 @@ class ExactCurve:
         return [(p1[k] - p0[k]) / (hi - lo) for k in range(3)]
 
     def jet(self, t: Any) -> tuple[list[Any], list[Any], list[Any]]:
-        """Return ``P(t)``, ``P'(t)`` and ``P''(t)`` (central differences, step ``10**(-dps/3)``)."""
+        """Return ``P(t)``, ``P'(t)`` and ``P''(t)`` (central differences, step ``10**(-dps/3)``).
+
+        >>> import build123d as bd
+        >>> p, d1, d2 = ExactCurve(bd.Line((0, 0), (3, 4))).jet(1.0)  # at mpmath's working precision
+        >>> [round(float(x), 6) + 0.0 for x in d1 + d2]
+        [0.6, 0.8, 0.0, 0.0, 0.0, 0.0]
+        """
         mp = self.mp
         h = mp.mpf(10) ** (-(mp.dps // 3)) * max(mp.mpf(1), abs(mp.mpf(self.last - self.first)))
         t = mp.mpf(t)
@@ -243,7 +259,12 @@ class ExactCurve:
         return p0, d1, d2
 
     def clamp(self, t: Any) -> Any:
-        """Clamp ``t`` into the edge's parameter range."""
+        """Clamp ``t`` into the edge's parameter range.
+
+        >>> import build123d as bd
+        >>> float(ExactCurve(bd.Line((0, 0), (3, 4))).clamp(7.0))
+        5.0
+        """
         return min(max(t, self.mp.mpf(self.first)), self.mp.mpf(self.last))
 
 
@@ -253,6 +274,11 @@ class ExactCurve:
 @dataclass(frozen=True)
 class PointCheck:
     """The arbiter's finding near a point candidate.
+
+    >>> import build123d as bd
+    >>> check = arbitrate_point(bd.Line((0, 0), (2, 2)), bd.Line((0, 2), (2, 0)), 1.4, 1.4, tol=1e-7)
+    >>> check.kind, check.holds, round(check.t, 12)
+    ('crossing', True, 1.414213562373)
 
     Attributes
     ----------
@@ -286,6 +312,12 @@ class PointCheck:
 class OverlapCheck:
     """The arbiter's finding on an overlap claim ``a[t0, t1] == b[u0, u1]``.
 
+    >>> import build123d as bd
+    >>> a, b = bd.Line((0, 0), (4, 0)), bd.Line((1, 0), (3, 0))
+    >>> check = arbitrate_overlap(a, b, (1.0, 3.0), (0.0, 2.0), tol=1e-7)
+    >>> check.status, check.holds
+    ('coincident', True)
+
     Attributes
     ----------
     status : {"coincident", "within_tolerance", "tangent", "crossing", "none"}
@@ -309,7 +341,11 @@ class OverlapCheck:
 
     @property
     def holds(self) -> bool:
-        """True when the overlap claim is right (coincident or within tolerance)."""
+        """True when the overlap claim is right (coincident or within tolerance).
+
+        >>> OverlapCheck(status="none", max_distance=1.0).holds
+        False
+        """
         return self.status in ("coincident", "within_tolerance")
 
 
@@ -555,6 +591,11 @@ def arbitrate_overlap(
 class Match:
     """A result both sides found.
 
+    >>> import build123d as bd
+    >>> m = compare(bd.Line((0, 0), (2, 2)), bd.Line((0, 2), (2, 0))).agreed[0]
+    >>> m.relief.kind, m.occt.route, m.distance < 1e-12
+    ('crossing', 'Geom2dInt_GInter', True)
+
     Attributes
     ----------
     relief, occt : EdgeIntersection or EdgeOverlap
@@ -585,6 +626,10 @@ class Match:
 class Verdict:
     """Who is right about one disagreement, and why.
 
+    >>> v = Verdict(winner="relief_cad", truth="tangent", reason="OCCT reports a segment", distance=0.0)
+    >>> v.winner, v.exact
+    ('relief_cad', True)
+
     Attributes
     ----------
     winner : {"relief_cad", "occt", "neither"}
@@ -611,6 +656,12 @@ class Verdict:
 class Disagreement:
     """A result claimed by one side only (or an overlap/point conflict), with its verdict.
 
+    >>> from relief_cad.cad.results import EdgeIntersection
+    >>> claim = EdgeIntersection(0, 0, None, None, 0.5, 0.5, (1.0, 1.0, 0.0), "crossing")
+    >>> d = Disagreement("relief_cad", claim, (), Verdict("relief_cad", "crossing", "OCCT missed it", 0.0))
+    >>> d.status, d.index
+    ('only relief_cad', (0, 0))
+
     Attributes
     ----------
     claimant : {"relief_cad", "occt"}
@@ -632,14 +683,26 @@ class Disagreement:
 
     @property
     def status(self) -> str:
-        """``"only relief_cad"``, ``"only occt"``, or ``"range dispute"`` (both report an overlap)."""
+        """``"only relief_cad"``, ``"only occt"``, or ``"range dispute"`` (both report an overlap).
+
+        >>> from relief_cad.cad.results import EdgeIntersection
+        >>> p = EdgeIntersection(0, 0, None, None, 0.5, 0.5, (1.0, 1.0, 0.0), "crossing")
+        >>> Disagreement("occt", p, (), Verdict("occt", "crossing", "", 0.0)).status
+        'only occt'
+        """
         if isinstance(self.claim, EdgeOverlap) and any(isinstance(c, EdgeOverlap) for c in self.counter):
             return "range dispute"
         return f"only {self.claimant}"
 
     @property
     def index(self) -> tuple[int, int]:
-        """The edge pair ``(index_a, index_b)``."""
+        """The edge pair ``(index_a, index_b)``.
+
+        >>> from relief_cad.cad.results import EdgeIntersection
+        >>> p = EdgeIntersection(2, 5, None, None, 0.5, 0.5, (1.0, 1.0, 0.0), "crossing")
+        >>> Disagreement("occt", p, (), Verdict("occt", "crossing", "", 0.0)).index
+        (2, 5)
+        """
         return (self.claim.index_a, self.claim.index_b)
 
 
@@ -670,6 +733,11 @@ def _res_dict(r: EdgeResult) -> dict[str, Any]:
 @dataclass
 class Comparison:
     """relief_cad's answer and OCCT's on the same shapes, matched, with verdicts.
+
+    >>> import build123d as bd
+    >>> c = compare(bd.Line((0, 0), (2, 2)), bd.Line((0, 2), (2, 0)))
+    >>> c.agree, len(c.agreed), c.routes
+    (True, 1, ['Geom2dInt_GInter'])
 
     Attributes
     ----------
@@ -704,21 +772,44 @@ class Comparison:
 
     @property
     def only_relief(self) -> list[Disagreement]:
-        """Disagreements claimed by relief_cad."""
+        """Disagreements claimed by relief_cad.
+
+        >>> import build123d as bd
+        >>> c = compare(bd.Line((0, 0), (2, 2)), bd.Line((0, 2), (2, 0)))
+        >>> c.only_relief
+        []
+        """
         return [d for d in self.disagreements if d.claimant == "relief_cad"]
 
     @property
     def only_occt(self) -> list[Disagreement]:
-        """Disagreements claimed by OCCT."""
+        """Disagreements claimed by OCCT.
+
+        >>> import build123d as bd
+        >>> c = compare(bd.Line((0, 0), (2, 2)), bd.Line((0, 2), (2, 0)))
+        >>> c.only_occt
+        []
+        """
         return [d for d in self.disagreements if d.claimant == "occt"]
 
     @property
     def agree(self) -> bool:
-        """True when the two answers match completely."""
+        """True when the two answers match completely.
+
+        >>> import build123d as bd
+        >>> c = compare(bd.Line((0, 0), (2, 2)), bd.Line((0, 2), (2, 0)))
+        >>> c.agree
+        True
+        """
         return not self.disagreements and not self.errors
 
     def score(self) -> dict[str, int]:
         """Count verdicts: how often each side was right on a disagreement.
+
+        >>> import build123d as bd
+        >>> c = compare(bd.Line((0, 0), (2, 2)), bd.Line((0, 2), (2, 0)))
+        >>> c.score()["agreed"], c.score()["occt_right"]
+        (1, 0)
 
         Returns
         -------
@@ -736,7 +827,14 @@ class Comparison:
         return s
 
     def to_dict(self) -> dict[str, Any]:
-        """Return a JSON-ready summary (no OCCT objects)."""
+        """Return a JSON-ready summary (no OCCT objects).
+
+        >>> import build123d as bd
+        >>> c = compare(bd.Line((0, 0), (2, 2)), bd.Line((0, 2), (2, 0)))
+        >>> import json
+        >>> json.loads(json.dumps(c.to_dict()))["tol"] == c.tol
+        True
+        """
         return {
             "tol": self.tol,
             "routes": self.routes,
@@ -849,6 +947,13 @@ class Comparison:
         Returns
         -------
         str
+
+        Examples
+        --------
+        >>> import build123d as bd
+        >>> c = compare(bd.Line((0, 0), (2, 2)), bd.Line((0, 2), (2, 0)))
+        >>> c.to_html().startswith("<"), "<img" in c.to_html(plot=True)
+        (True, True)
         """
         s = self.score()
         rows = "".join(
@@ -879,6 +984,12 @@ class Comparison:
         -------
         bytes
             PNG data (empty when matplotlib is missing).
+
+        Examples
+        --------
+        >>> import build123d as bd
+        >>> compare(bd.Line((0, 0), (2, 2)), bd.Line((0, 2), (2, 0))).plot_png()[1:4]
+        b'PNG'
         """
         return plot_pair_png(
             self.edges_a,

@@ -32,6 +32,12 @@ __all__ = ["EdgeIntersection", "EdgeOverlap", "EdgeResult"]
 class EdgeIntersection:
     """An isolated common point of two edges (or a double point of one edge).
 
+    >>> import build123d as bd
+    >>> from relief_cad.cad import intersections
+    >>> hit = intersections(bd.Line((0, 0), (2, 2)), bd.Line((0, 2), (2, 0)))[0]
+    >>> hit.kind, round(hit.t, 12), tuple(round(c, 12) for c in hit.point)
+    ('crossing', 1.414213562373, (1.0, 1.0, 0.0))
+
     Attributes
     ----------
     index_a : int
@@ -84,6 +90,12 @@ class EdgeIntersection:
 class EdgeOverlap:
     """A stretch along which two edges coincide.
 
+    >>> import build123d as bd
+    >>> from relief_cad.cad import intersections
+    >>> ov = intersections(bd.Line((0, 0), (4, 0)), bd.Line((3, 0), (1, 0)))[0]
+    >>> ov.kind, ov.t, ov.u, round(ov.edge.length, 12)
+    ('overlap', (1.0, 3.0), (2.0, 0.0), 2.0)
+
     Attributes
     ----------
     index_a, index_b : int
@@ -118,7 +130,13 @@ class EdgeOverlap:
 
     @property
     def reversed_direction(self) -> bool:
-        """True when ``edge_b`` runs against ``edge_a`` along the overlap."""
+        """True when ``edge_b`` runs against ``edge_a`` along the overlap.
+
+        >>> import build123d as bd
+        >>> from relief_cad.cad import intersections
+        >>> intersections(bd.Line((0, 0), (4, 0)), bd.Line((3, 0), (1, 0)))[0].reversed_direction
+        True
+        """
         return self.u[1] < self.u[0]
 
 
