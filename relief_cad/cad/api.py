@@ -37,8 +37,10 @@ from typing import Any
 
 import numpy as np
 
+from .._kernels import KIND_CROSSING, KIND_TANGENT, KIND_UNRESOLVED, intersect_batch_kernel
 from ..curves import RationalBezier
 from ..errors import AdapterUnavailableError, InvalidInputError
+from ..intersection import DEFAULT_BUDGET
 from ..results import Intersection, Overlap
 from ..tolerances import default_tolerance
 from . import ocp
@@ -193,15 +195,17 @@ class _EdgeInfo:
     index: int
     edge: Any  # TopoDS_Edge
     segs: list[ocp.Segment]
-    boxes: np.ndarray  # (nseg, 2, 3): lo, hi of every segment's control points
-    lo: np.ndarray
-    hi: np.ndarray
+    lows: list[tuple[float, float, float]]  # lower corner of every segment's control-point box
+    highs: list[tuple[float, float, float]]  # upper corners
+    lo: tuple[float, float, float]  # the edge's box
+    hi: tuple[float, float, float]
     tolerance: float
     approximate: bool
     first: float
     last: float
     frame: np.ndarray | None = None  # the common 2D frame of all edges, when there is one
     _curves2d: dict[int, RationalBezier] | None = None
+    _packed: tuple[np.ndarray, np.ndarray, list[int]] | None = None  # see _planar_arrays
     _vertices: tuple[Any, Any] | None = None
 
     @property
@@ -218,16 +222,20 @@ def _prepare(shape: Any) -> list[_EdgeInfo]:
         if BRep_Tool.Degenerated_s(edge):
             continue
         segs = ocp.edge_segments(edge)
-        boxes = _boxes(segs)
+        lows, highs = _boxes(segs)
         one = len(segs) == 1
+        lo = lows[0] if one else (min(b[0] for b in lows), min(b[1] for b in lows), min(b[2] for b in lows))
+        hi = highs[0] if one else (max(b[0] for b in highs), max(b[1] for b in highs),
+                                   max(b[2] for b in highs))
         infos.append(
             _EdgeInfo(
                 index=index,
                 edge=edge,
                 segs=segs,
-                boxes=boxes,
-                lo=boxes[0, 0] if one else boxes[:, 0].min(axis=0),
-                hi=boxes[0, 1] if one else boxes[:, 1].max(axis=0),
+                lows=lows,
+                highs=highs,
+                lo=lo,
+                hi=hi,
                 tolerance=BRep_Tool.Tolerance_s(edge),
                 approximate=segs[0].approximate,
                 first=segs[0].t0,
@@ -237,51 +245,55 @@ def _prepare(shape: Any) -> list[_EdgeInfo]:
     return infos
 
 
-def _boxes(segs: list[ocp.Segment]) -> np.ndarray:
-    """Boxes ``(nseg, 2, 3)`` (lo, hi) of the segments' control points (one reduction when possible)."""
-    boxes = np.empty((len(segs), 2, 3))
-    if len(segs) == 1:
-        pts = segs[0].control_points
-        boxes[0, 0] = pts.min(axis=0)
-        boxes[0, 1] = pts.max(axis=0)
-        return boxes
-    if all(len(s.homogeneous) == len(segs[0].homogeneous) for s in segs):
-        h = np.array([s.homogeneous for s in segs])
-        pts = h[..., :3] / h[..., 3:]
-        boxes[:, 0] = pts.min(axis=1)
-        boxes[:, 1] = pts.max(axis=1)
-        return boxes
-    for k, s in enumerate(segs):
-        boxes[k, 0] = s.control_points.min(axis=0)
-        boxes[k, 1] = s.control_points.max(axis=0)
-    return boxes
+_Point3 = tuple[float, float, float]
+
+
+def _boxes(segs: list[ocp.Segment]) -> tuple[list[_Point3], list[_Point3]]:
+    """Lower and upper corners of the segments' control-point boxes (Python floats: tiny arrays)."""
+    lows: list[_Point3] = []
+    highs: list[_Point3] = []
+    for s in segs:
+        rows = s.homogeneous.tolist()
+        xs = [r[0] / r[3] for r in rows]
+        ys = [r[1] / r[3] for r in rows]
+        zs = [r[2] / r[3] for r in rows]
+        lows.append((min(xs), min(ys), min(zs)))
+        highs.append((max(xs), max(ys), max(zs)))
+    return lows, highs
 
 
 def _all_points(infos: list[_EdgeInfo]) -> np.ndarray:
     return np.vstack([s.control_points for e in infos for s in e.segs])
 
 
-def _joint_box(infos: list[_EdgeInfo]) -> np.ndarray:
+def _joint_box(infos: list[_EdgeInfo]) -> tuple[_Point3, _Point3]:
     """The two corners of the joint bounding box of the edges' control points."""
     if len(infos) == 1:
-        return np.array([infos[0].lo, infos[0].hi])
-    return np.array([np.min([e.lo for e in infos], axis=0), np.max([e.hi for e in infos], axis=0)])
+        return infos[0].lo, infos[0].hi
+    los = [e.lo for e in infos]
+    his = [e.hi for e in infos]
+    return (
+        (min(p[0] for p in los), min(p[1] for p in los), min(p[2] for p in los)),
+        (max(p[0] for p in his), max(p[1] for p in his), max(p[2] for p in his)),
+    )
 
 
-def _default_tol(infos: list[_EdgeInfo], box: np.ndarray | None = None) -> float:
+def _default_tol(infos: list[_EdgeInfo], box: tuple[_Point3, _Point3] | None = None) -> float:
     box = _joint_box(infos) if box is None else box
     size = math.dist(box[0], box[1])
     occt = max(e.tolerance for e in infos)
     if math.isfinite(occt) and 0.0 < occt <= _MEANINGFUL_FRACTION * size:
         return occt
     # the bounding box corners carry the size and the largest coordinate of all control points
-    return default_tolerance(box)
+    return default_tolerance(np.array(box))
 
 
-def _common_frame(infos: list[_EdgeInfo], tol: float, box: np.ndarray | None = None) -> np.ndarray | None:
+def _common_frame(
+    infos: list[_EdgeInfo], tol: float, box: tuple[_Point3, _Point3] | None = None
+) -> np.ndarray | None:
     """A 2D frame of a plane holding every control point, or None (XY-parallel checked on boxes)."""
     box = _joint_box(infos) if box is None else box
-    if box[1, 2] - box[0, 2] <= tol * _PLANE_FRACTION:
+    if box[1][2] - box[0][2] <= tol * _PLANE_FRACTION:
         return _XY_FRAME
     return ocp.planar_frame(_all_points(infos), tol * _PLANE_FRACTION)
 
@@ -315,6 +327,7 @@ def _set_plane(infos: list[_EdgeInfo], frame: np.ndarray | None) -> None:
     for e in infos:
         e.frame = frame
         e._curves2d = {}
+        e._packed = None
 
 
 def _curve2d(e: _EdgeInfo, i: int) -> RationalBezier:
@@ -359,8 +372,13 @@ class _Job:
     eb: _EdgeInfo
     i: int
     j: int
-    ca: RationalBezier
-    cb: RationalBezier | None  # None: self-intersection of one segment
+    ca: RationalBezier | None  # None: a planar pair in the common frame (packed for the kernel)
+    cb: RationalBezier | None  # None: self-intersection of one segment (or a packed planar pair)
+    packed: bool = False
+
+
+# one core result: (kind, t, u, t1, u1, distance); t1, u1 are the far ends of an overlap
+_Found = tuple[str, float, float, float, float, float]
 
 
 def _pair_jobs(ea: _EdgeInfo, eb: _EdgeInfo, same: bool, tol: float, planar: bool) -> list[_Job]:
@@ -372,19 +390,31 @@ def _pair_jobs(ea: _EdgeInfo, eb: _EdgeInfo, same: bool, tol: float, planar: boo
             tol * _PLANE_FRACTION,
         )
     jobs: list[_Job] = []
-    boxes_a, boxes_b = ea.boxes, eb.boxes
-    if len(boxes_a) == 1 and len(boxes_b) == 1:
+    if len(ea.lows) == 1 and len(eb.lows) == 1:
         candidates: Any = [(0, 0)]  # the edge boxes already overlap
+    elif len(ea.lows) * len(eb.lows) <= 64:
+        candidates = [
+            (i, j)
+            for i, (la, ha) in enumerate(zip(ea.lows, ea.highs, strict=True))
+            for j, (lb, hb) in enumerate(zip(eb.lows, eb.highs, strict=True))
+            if la[0] - tol <= hb[0] and lb[0] <= ha[0] + tol
+            and la[1] - tol <= hb[1] and lb[1] <= ha[1] + tol
+            and la[2] - tol <= hb[2] and lb[2] <= ha[2] + tol
+        ]
     else:
+        lo_a, hi_a = np.array(ea.lows), np.array(ea.highs)
+        lo_b, hi_b = np.array(eb.lows), np.array(eb.highs)
         close = np.all(
-            (boxes_a[:, None, 0, :] - tol <= boxes_b[None, :, 1, :])
-            & (boxes_b[None, :, 0, :] <= boxes_a[:, None, 1, :] + tol),
+            (lo_a[:, None, :] - tol <= hi_b[None, :, :]) & (lo_b[None, :, :] <= hi_a[:, None, :] + tol),
             axis=2,
         )
         candidates = zip(*np.nonzero(close), strict=True)
     for ii, jj in candidates:
         i, j = int(ii), int(jj)
         if same and j < i:
+            continue
+        if planar and not (same and i == j):
+            jobs.append(_Job(ea, eb, i, j, None, None, True))
             continue
         sa, sb = ea.segs[i], eb.segs[j]
         if planar:
@@ -398,35 +428,124 @@ def _pair_jobs(ea: _EdgeInfo, eb: _EdgeInfo, same: bool, tol: float, planar: boo
     return jobs
 
 
-def _solve(jobs: list[_Job], tol: float) -> list[list[Any]]:
+def _planar_arrays(e: _EdgeInfo) -> tuple[np.ndarray, np.ndarray, list[int]]:
+    """An edge's segments in the common frame, packed: points ``(N, 2)``, weights ``(N,)``, offsets.
+
+    The values are those of the segments' planar :class:`RationalBezier` curves
+    (:func:`_curve2d`): the same homogeneous rows divided by the same weights.
+    """
+    if e._packed is None:
+        frame = e.frame
+        if frame is None:
+            raise InvalidInputError("internal: no common frame set")  # pragma: no cover
+        segs = e.segs
+        offsets = [0]
+        for s in segs:
+            offsets.append(offsets[-1] + s.homogeneous.shape[0])
+        if frame is _XY_FRAME:
+            h = segs[0].homogeneous if len(segs) == 1 else np.concatenate([s.homogeneous for s in segs])
+            pts = h[:, :2] / h[:, 3:]
+            w = h[:, 3].copy()
+        else:
+            h2 = np.concatenate([_to_plane(s, frame).homogeneous for s in segs])
+            pts = h2[:, :2] / h2[:, 2:]
+            w = h2[:, 2].copy()
+        e._packed = (pts, w, offsets)
+    return e._packed
+
+
+def _solve_packed(jobs: list[_Job], tol: float) -> list[list[_Found]]:
+    """Planar jobs in the common frame: one call of the batch kernel on packed control points."""
+    base: dict[int, int] = {}
+    pts_list: list[np.ndarray] = []
+    w_list: list[np.ndarray] = []
+    offsets: list[int] = [0]
+    starts: dict[int, int] = {}  # id(edge info) -> index of its first segment among the packed curves
+    for job in jobs:
+        for e in (job.ea, job.eb):
+            if id(e) not in base:
+                pts, w, offs = _planar_arrays(e)
+                base[id(e)] = offsets[-1]
+                starts[id(e)] = len(offsets) - 1
+                pts_list.append(pts)
+                w_list.append(w)
+                shift = offsets[-1]
+                offsets.extend(shift + o for o in offs[1:])
+    P = pts_list[0] if len(pts_list) == 1 else np.concatenate(pts_list)
+    W = w_list[0] if len(w_list) == 1 else np.concatenate(w_list)
+    if P.base is not None or W.base is not None:
+        P, W = P.copy(), W.copy()
+    P.flags.writeable = False
+    W.flags.writeable = False
+    pairs = np.array([(starts[id(j.ea)] + j.i, starts[id(j.eb)] + j.j) for j in jobs], dtype=np.int64)
+    packed_offsets = np.array(offsets, dtype=np.int64)
+    tols = np.full(len(jobs), tol)
+    rows = intersect_batch_kernel(P, W, packed_offsets, pairs, tols, DEFAULT_BUDGET).tolist()
+    out: list[list[_Found]] = [[] for _ in jobs]
+    for r in rows:
+        kind = int(r[1])
+        if kind == KIND_UNRESOLVED:
+            # let the public intersector raise its BudgetExceededError with the partial results
+            job = jobs[int(r[0])]
+            _core()[0](_curve2d(job.ea, job.i), _curve2d(job.eb, job.j), tol=tol)
+            raise InvalidInputError("internal: unresolved box without a budget error")  # pragma: no cover
+        name = "crossing" if kind == KIND_CROSSING else "tangent" if kind == KIND_TANGENT else "overlap"
+        out[int(r[0])].append((name, r[2], r[3], r[4], r[5], r[8]))
+    for found in out:
+        if len(found) > 1:
+            found.sort(key=lambda f: f[1])
+    return out
+
+
+def _solve(jobs: list[_Job], tol: float) -> list[list[_Found]]:
     """Run the core intersector on every job; planar two-curve jobs in one batched call."""
+    answers: list[list[_Found] | None] = [None] * len(jobs)
+    packed = [k for k, job in enumerate(jobs) if job.packed]
+    if packed:
+        for k, found in zip(packed, _solve_packed([jobs[k] for k in packed], tol), strict=True):
+            answers[k] = found
+    if len(packed) == len(jobs):
+        return answers  # type: ignore[return-value]
     core, many = _core()
-    answers: list[list[Any] | None] = [None] * len(jobs)
-    batch = [k for k, job in enumerate(jobs) if job.cb is not None and job.ca.dim == 2 and job.cb.dim == 2]
+    batch = [
+        k for k, job in enumerate(jobs)
+        if answers[k] is None and job.ca is not None and job.cb is not None
+        and job.ca.dim == 2 and job.cb.dim == 2
+    ]
     if many is not None and len(batch) > 1:
         for k, res in zip(batch, many([(jobs[k].ca, jobs[k].cb) for k in batch], tol=tol), strict=True):
-            answers[k] = list(res)
+            answers[k] = _as_found(res)
     for k, job in enumerate(jobs):
         if answers[k] is None:
-            answers[k] = list(core(job.ca, job.cb, tol=tol))
+            answers[k] = _as_found(core(job.ca, job.cb, tol=tol))
     return [a if a is not None else [] for a in answers]
 
 
-def _raw_results(job: _Job, found: list[Any]) -> list[_Raw]:
+def _as_found(results: Any) -> list[_Found]:
+    out: list[_Found] = []
+    for r in results:
+        if isinstance(r, Overlap):
+            out.append(("overlap", r.t[0], r.u[0], r.t[1], r.u[1], 0.0))
+        elif isinstance(r, Intersection):
+            out.append((r.kind, r.t, r.u, 0.0, 0.0, r.distance))
+    return out
+
+
+def _raw_results(job: _Job, found: list[_Found]) -> list[_Raw]:
     """Map one segment pair's results to the edges' own parameters and 3D points."""
     ea, eb = job.ea, job.eb
     sa, sb = ea.segs[job.i], eb.segs[job.j]
     out: list[_Raw] = []
-    for r in found:
-        if isinstance(r, Overlap):
-            t = (sa.edge_param(r.t[0]), sa.edge_param(r.t[1]))
-            u = (sb.edge_param(r.u[0]), sb.edge_param(r.u[1]))
-            out.append(_Raw(ea, eb, t, u, _point3(sa, r.t[0]), "overlap", 0.0))
-        elif isinstance(r, Intersection):
-            pa = _point3(sa, r.t)
-            pb = _point3(sb, r.u)
+    for kind, t, u, t1, u1, _distance in found:
+        if kind == "overlap":
+            tt = (sa.edge_param(t), sa.edge_param(t1))
+            uu = (sb.edge_param(u), sb.edge_param(u1))
+            out.append(_Raw(ea, eb, tt, uu, _point3(sa, t), "overlap", 0.0))
+        else:
+            pa = _point3(sa, t)
+            pb = _point3(sb, u)
             point = (0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]))
-            out.append(_Raw(ea, eb, sa.edge_param(r.t), sb.edge_param(r.u), point, r.kind, math.dist(pa, pb)))
+            out.append(_Raw(ea, eb, sa.edge_param(t), sb.edge_param(u), point, kind, math.dist(pa, pb)))
     return out
 
 
@@ -534,17 +653,19 @@ def _close_edge_pairs(infos_a: list[_EdgeInfo], infos_b: list[_EdgeInfo], tol: f
     if len(infos_a) * len(infos_b) <= 16:
         out = []
         for ia, ea in enumerate(infos_a):
-            lo_a, hi_a = ea.lo.tolist(), ea.hi.tolist()
+            lo_a, hi_a = ea.lo, ea.hi
             for ib, eb in enumerate(infos_b):
-                lo_b, hi_b = eb.lo.tolist(), eb.hi.tolist()
+                lo_b, hi_b = eb.lo, eb.hi
                 if all(lo_a[k] - tol <= hi_b[k] and lo_b[k] - tol <= hi_a[k] for k in range(3)):
                     out.append((ia, ib))
         return out
-    lo_a = np.array([e.lo for e in infos_a]) - tol
-    hi_a = np.array([e.hi for e in infos_a]) + tol
-    lo_b = np.array([e.lo for e in infos_b])
-    hi_b = np.array([e.hi for e in infos_b])
-    close = np.all((lo_a[:, None, :] <= hi_b[None, :, :]) & (lo_b[None, :, :] <= hi_a[:, None, :]), axis=2)
+    los_a = np.array([e.lo for e in infos_a]) - tol
+    his_a = np.array([e.hi for e in infos_a]) + tol
+    los_b = np.array([e.lo for e in infos_b])
+    his_b = np.array([e.hi for e in infos_b])
+    close = np.all(
+        (los_a[:, None, :] <= his_b[None, :, :]) & (los_b[None, :, :] <= his_a[:, None, :]), axis=2
+    )
     return zip(*np.nonzero(close), strict=True)
 
 
