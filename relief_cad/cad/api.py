@@ -195,6 +195,7 @@ class _EdgeInfo:
     index: int
     edge: Any  # TopoDS_Edge
     segs: list[ocp.Segment]
+    rows: list[list[list[float]]]  # every segment's homogeneous rows as Python floats
     lows: list[tuple[float, float, float]]  # lower corner of every segment's control-point box
     highs: list[tuple[float, float, float]]  # upper corners
     lo: tuple[float, float, float]  # the edge's box
@@ -205,7 +206,7 @@ class _EdgeInfo:
     last: float
     frame: np.ndarray | None = None  # the common 2D frame of all edges, when there is one
     _curves2d: dict[int, RationalBezier] | None = None
-    _packed: tuple[np.ndarray, np.ndarray, list[int]] | None = None  # see _planar_arrays
+    _packed: tuple[list[list[float]], list[float], list[int]] | None = None  # see _planar_arrays
     _vertices: tuple[Any, Any] | None = None
 
     @property
@@ -222,16 +223,19 @@ def _prepare(shape: Any) -> list[_EdgeInfo]:
         if BRep_Tool.Degenerated_s(edge):
             continue
         segs = ocp.edge_segments(edge)
-        lows, highs = _boxes(segs)
-        one = len(segs) == 1
-        lo = lows[0] if one else (min(b[0] for b in lows), min(b[1] for b in lows), min(b[2] for b in lows))
-        hi = highs[0] if one else (max(b[0] for b in highs), max(b[1] for b in highs),
-                                   max(b[2] for b in highs))
+        rows = [s.homogeneous.tolist() for s in segs]
+        lows, highs = _boxes(rows)
+        if len(segs) == 1:
+            lo, hi = lows[0], highs[0]
+        else:
+            lo = (min(b[0] for b in lows), min(b[1] for b in lows), min(b[2] for b in lows))
+            hi = (max(b[0] for b in highs), max(b[1] for b in highs), max(b[2] for b in highs))
         infos.append(
             _EdgeInfo(
                 index=index,
                 edge=edge,
                 segs=segs,
+                rows=rows,
                 lows=lows,
                 highs=highs,
                 lo=lo,
@@ -248,15 +252,14 @@ def _prepare(shape: Any) -> list[_EdgeInfo]:
 _Point3 = tuple[float, float, float]
 
 
-def _boxes(segs: list[ocp.Segment]) -> tuple[list[_Point3], list[_Point3]]:
+def _boxes(rows: list[list[list[float]]]) -> tuple[list[_Point3], list[_Point3]]:
     """Lower and upper corners of the segments' control-point boxes (Python floats: tiny arrays)."""
     lows: list[_Point3] = []
     highs: list[_Point3] = []
-    for s in segs:
-        rows = s.homogeneous.tolist()
-        xs = [r[0] / r[3] for r in rows]
-        ys = [r[1] / r[3] for r in rows]
-        zs = [r[2] / r[3] for r in rows]
+    for seg in rows:
+        xs = [r[0] / r[3] for r in seg]
+        ys = [r[1] / r[3] for r in seg]
+        zs = [r[2] / r[3] for r in seg]
         lows.append((min(xs), min(ys), min(zs)))
         highs.append((max(xs), max(ys), max(zs)))
     return lows, highs
@@ -428,8 +431,8 @@ def _pair_jobs(ea: _EdgeInfo, eb: _EdgeInfo, same: bool, tol: float, planar: boo
     return jobs
 
 
-def _planar_arrays(e: _EdgeInfo) -> tuple[np.ndarray, np.ndarray, list[int]]:
-    """An edge's segments in the common frame, packed: points ``(N, 2)``, weights ``(N,)``, offsets.
+def _planar_arrays(e: _EdgeInfo) -> tuple[list[list[float]], list[float], list[int]]:
+    """An edge's segments in the common frame, packed: points ``[x, y]``, weights, offsets.
 
     The values are those of the segments' planar :class:`RationalBezier` curves
     (:func:`_curve2d`): the same homogeneous rows divided by the same weights.
@@ -438,43 +441,41 @@ def _planar_arrays(e: _EdgeInfo) -> tuple[np.ndarray, np.ndarray, list[int]]:
         frame = e.frame
         if frame is None:
             raise InvalidInputError("internal: no common frame set")  # pragma: no cover
-        segs = e.segs
         offsets = [0]
-        for s in segs:
-            offsets.append(offsets[-1] + s.homogeneous.shape[0])
+        pts: list[list[float]] = []
+        ws: list[float] = []
         if frame is _XY_FRAME:
-            h = segs[0].homogeneous if len(segs) == 1 else np.concatenate([s.homogeneous for s in segs])
-            pts = h[:, :2] / h[:, 3:]
-            w = h[:, 3].copy()
+            for seg in e.rows:
+                pts.extend([r[0] / r[3], r[1] / r[3]] for r in seg)
+                ws.extend(r[3] for r in seg)
+                offsets.append(len(ws))
         else:
-            h2 = np.concatenate([_to_plane(s, frame).homogeneous for s in segs])
-            pts = h2[:, :2] / h2[:, 2:]
-            w = h2[:, 2].copy()
-        e._packed = (pts, w, offsets)
+            for s in e.segs:
+                for x, y, w in _to_plane(s, frame).homogeneous.tolist():
+                    pts.append([x / w, y / w])
+                    ws.append(w)
+                offsets.append(len(ws))
+        e._packed = (pts, ws, offsets)
     return e._packed
 
 
 def _solve_packed(jobs: list[_Job], tol: float) -> list[list[_Found]]:
     """Planar jobs in the common frame: one call of the batch kernel on packed control points."""
-    base: dict[int, int] = {}
-    pts_list: list[np.ndarray] = []
-    w_list: list[np.ndarray] = []
+    pts: list[list[float]] = []
+    ws: list[float] = []
     offsets: list[int] = [0]
     starts: dict[int, int] = {}  # id(edge info) -> index of its first segment among the packed curves
     for job in jobs:
         for e in (job.ea, job.eb):
-            if id(e) not in base:
-                pts, w, offs = _planar_arrays(e)
-                base[id(e)] = offsets[-1]
+            if id(e) not in starts:
+                e_pts, e_ws, e_offsets = _planar_arrays(e)
                 starts[id(e)] = len(offsets) - 1
-                pts_list.append(pts)
-                w_list.append(w)
-                shift = offsets[-1]
-                offsets.extend(shift + o for o in offs[1:])
-    P = pts_list[0] if len(pts_list) == 1 else np.concatenate(pts_list)
-    W = w_list[0] if len(w_list) == 1 else np.concatenate(w_list)
-    if P.base is not None or W.base is not None:
-        P, W = P.copy(), W.copy()
+                shift = len(ws)
+                pts.extend(e_pts)
+                ws.extend(e_ws)
+                offsets.extend([shift + o for o in e_offsets[1:]])
+    P = np.array(pts)
+    W = np.array(ws)
     P.flags.writeable = False
     W.flags.writeable = False
     pairs = np.array([(starts[id(j.ea)] + j.i, starts[id(j.eb)] + j.j) for j in jobs], dtype=np.int64)
@@ -535,32 +536,36 @@ def _raw_results(job: _Job, found: list[_Found]) -> list[_Raw]:
     """Map one segment pair's results to the edges' own parameters and 3D points."""
     ea, eb = job.ea, job.eb
     sa, sb = ea.segs[job.i], eb.segs[job.j]
+    ra, rb = ea.rows[job.i], eb.rows[job.j]
     out: list[_Raw] = []
     for kind, t, u, t1, u1, _distance in found:
         if kind == "overlap":
             tt = (sa.edge_param(t), sa.edge_param(t1))
             uu = (sb.edge_param(u), sb.edge_param(u1))
-            out.append(_Raw(ea, eb, tt, uu, _point3(sa, t), "overlap", 0.0))
+            out.append(_Raw(ea, eb, tt, uu, _point3(ra, t), "overlap", 0.0))
         else:
-            pa = _point3(sa, t)
-            pb = _point3(sb, u)
+            pa = _point3(ra, t)
+            pb = _point3(rb, u)
             point = (0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]))
             out.append(_Raw(ea, eb, sa.edge_param(t), sb.edge_param(u), point, kind, math.dist(pa, pb)))
     return out
 
 
-def _point3(segment: ocp.Segment, s: float) -> tuple[float, float, float]:
-    """The point of a space segment at ``s`` (Bernstein sum of the homogeneous rows; ends exact)."""
-    h = segment.homogeneous
-    n = h.shape[0] - 1
+def _point3(rows: list[list[float]], s: float) -> tuple[float, float, float]:
+    """The point at ``s`` of a space segment given by its homogeneous rows (Bernstein sum; ends exact)."""
+    n = len(rows) - 1
     if s <= 0.0 or s >= 1.0:
-        row = h[0] if s <= 0.0 else h[n]
+        x, y, z, w = rows[0] if s <= 0.0 else rows[n]
     else:
         r = 1.0 - s
-        basis = np.array([math.comb(n, i) * s**i * r ** (n - i) for i in range(n + 1)])
-        row = basis @ h
-    w = float(row[3])
-    return (float(row[0]) / w, float(row[1]) / w, float(row[2]) / w)
+        x = y = z = w = 0.0
+        for i, (hx, hy, hz, hw) in enumerate(rows):
+            b = math.comb(n, i) * s**i * r ** (n - i)
+            x += b * hx
+            y += b * hy
+            z += b * hz
+            w += b * hw
+    return (x / w, y / w, z / w)
 
 
 def _is_same_vertex(v: Any, w: Any) -> bool:
@@ -575,6 +580,8 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
     """Merge overlaps, drop points inside overlaps, duplicates and trivial contacts of one edge pair."""
     if not raws:
         return raws
+    if len(raws) == 1 and not same and not self_mode and raws[0].kind != "overlap":
+        return raws  # a single point of two distinct edges: nothing to merge or drop
     ea, eb = raws[0].ea, raws[0].eb
     ptol = 1e-9
     overlaps = sorted((r for r in raws if r.kind == "overlap"), key=lambda r: r.t[0])
