@@ -30,7 +30,8 @@ h1{font-size:1.5em}h2{font-size:1.2em;border-bottom:1px solid #ccc;margin-top:1.
 table{border-collapse:collapse;margin:.5em 0;font-size:.85em}
 td,th{border:1px solid #bbb;padding:2px 6px;text-align:right}
 th{background:#eef}td.l,th.l{text-align:left}
-.card{border:1px solid #ccc;border-radius:4px;padding:.6em;margin:.8em 0;display:flex;gap:1em;align-items:flex-start}
+.card{border:1px solid #ccc;border-radius:4px;padding:.6em;margin:.8em 0;
+  display:flex;gap:1em;align-items:flex-start}
 .card img{flex:none}.card .txt{font-size:.85em}
 .win-relief_cad{color:#1565c0;font-weight:bold}.win-occt{color:#c62828;font-weight:bold}
 .win-neither{color:#6d4c41;font-weight:bold}.small{font-size:.8em;color:#555}
