@@ -268,6 +268,15 @@ class Segment:
         return float(s) if scalar else s
 
 
+def _segment(h: np.ndarray, t0: float, t1: float, mapping: str = "linear", centre: float = 0.0,
+             scale: float = 1.0) -> Segment:
+    """A :class:`Segment` of an exact conversion, without the frozen-dataclass ``__init__`` (hot path)."""
+    seg = object.__new__(Segment)
+    seg.__dict__.update(homogeneous=h, t0=t0, t1=t1, mapping=mapping, centre=centre, scale=scale,
+                        approximate=False, error=0.0)
+    return seg
+
+
 def _make_curve(h: np.ndarray) -> RationalBezier:
     """Build a curve from homogeneous rows OCCT guarantees finite with positive weights."""
     trusted = getattr(RationalBezier, "_trusted", None)
@@ -461,7 +470,9 @@ def _quadratic_spans(
     span = last - first
     n = max(1, math.ceil(span / max_span - 1e-9))
     knots = [first + span * i / n for i in range(n)] + [last]
-    out = []
+    (ox, oy, oz), (xx, xy, xz), (yx, yy, yz) = frame
+    rows = []
+    params = []
     # the middle control point is stored times its weight cos(half) / cosh(half)
     x0, y0 = a * fx(first), b * fy(first)
     for i in range(n):
@@ -469,10 +480,20 @@ def _quadratic_spans(
         half = 0.5 * (k1 - k0)
         mid = k0 + half
         x1, y1 = a * fx(k1), b * fy(k1)
-        h = _apply(_rows(frame, [(x0, y0, 1.0), (a * fx(mid), b * fy(mid), fx(half)), (x1, y1, 1.0)]), m)
-        out.append(Segment(h, k0, k1, mapping, mid, fs(0.5 * half)))
+        # as _rows(frame, [(x0, y0, 1), (a fx(mid), b fy(mid), fx(half)), (x1, y1, 1)])
+        rows.append(
+            [
+                (ox * w + x * xx + y * yx, oy * w + x * xy + y * yy, oz * w + x * xz + y * yz, w)
+                for x, y, w in ((x0, y0, 1.0), (a * fx(mid), b * fy(mid), fx(half)), (x1, y1, 1.0))
+            ]
+        )
+        params.append((k0, k1, mid, fs(0.5 * half)))
         x0, y0 = x1, y1
-    return out
+    hs = np.array(rows)
+    return [
+        _segment(_apply(hs[i], m), k0, k1, mapping, mid, scale)
+        for i, (k0, k1, mid, scale) in enumerate(params)
+    ]
 
 
 def _parabola_segment(curve: Any, first: float, last: float, m: np.ndarray | None) -> list[Segment]:
@@ -496,20 +517,22 @@ def _line_segment(curve: Any, first: float, last: float, m: np.ndarray | None) -
             (ox + last * dx, oy + last * dy, oz + last * dz, 1.0),
         ]
     )
-    return [Segment(_apply(h, m), first, last)]
+    return [_segment(_apply(h, m), first, last)]
 
 
 def _bezier_rows(bez: Any) -> np.ndarray:
     """Homogeneous rows of a Geom_BezierCurve (1-based OCCT access)."""
     n = bez.NbPoles()
+    pole = bez.Pole
     if bez.IsRational():
+        weight = bez.Weight
         rows = []
         for i in range(1, n + 1):
-            x, y, z = bez.Pole(i).Coord()
-            w = bez.Weight(i)
+            x, y, z = pole(i).Coord()
+            w = weight(i)
             rows.append((x * w, y * w, z * w, w))
         return np.array(rows)
-    return np.array([(*bez.Pole(i).Coord(), 1.0) for i in range(1, n + 1)])
+    return np.array([(*pole(i).Coord(), 1.0) for i in range(1, n + 1)])
 
 
 def _bezier_segment(curve: Any, first: float, last: float, m: np.ndarray | None) -> list[Segment]:
@@ -548,7 +571,7 @@ def _bspline_segments(curve: Any, first: float, last: float, m: np.ndarray | Non
         if ks[i + 1] <= ks[i]:
             continue
         h = _apply(_bezier_rows(conv.Arc(i + 1)), m)
-        out.append(Segment(h, ks[i], ks[i + 1]))
+        out.append(_segment(h, ks[i], ks[i + 1]))
     return out
 
 
