@@ -273,6 +273,10 @@ def _joint_box(infos: list[_EdgeInfo]) -> tuple[_Point3, _Point3]:
     """The two corners of the joint bounding box of the edges' control points."""
     if len(infos) == 1:
         return infos[0].lo, infos[0].hi
+    if len(infos) == 2:
+        (a0, a1, a2), (b0, b1, b2) = infos[0].lo, infos[1].lo
+        (c0, c1, c2), (d0, d1, d2) = infos[0].hi, infos[1].hi
+        return ((min(a0, b0), min(a1, b1), min(a2, b2)), (max(c0, d0), max(c1, d1), max(c2, d2)))
     los = [e.lo for e in infos]
     his = [e.hi for e in infos]
     return (
@@ -480,7 +484,7 @@ def _solve_packed(jobs: list[_Job], tol: float) -> list[list[_Found]]:
     W.flags.writeable = False
     pairs = np.array([(starts[id(j.ea)] + j.i, starts[id(j.eb)] + j.j) for j in jobs], dtype=np.int64)
     packed_offsets = np.array(offsets, dtype=np.int64)
-    tols = np.full(len(jobs), tol)
+    tols = np.array([tol] * len(jobs))
     rows = intersect_batch_kernel(P, W, packed_offsets, pairs, tols, DEFAULT_BUDGET).tolist()
     out: list[list[_Found]] = [[] for _ in jobs]
     for r in rows:

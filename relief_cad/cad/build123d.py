@@ -78,7 +78,10 @@ def intersect(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
     >>> intersect(bd.Edge.make_circle(1.0), bd.Edge.make_line((5, 5), (6, 6)))
     []
     """
-    return wrap_vertices([v.wrapped for v in _as_list(api.intersect(a, b, tol=tol))])
+    found = api.intersect(a, b, tol=tol)
+    if isinstance(found, _bd.ShapeList) and all(isinstance(v, _bd.Vertex) for v in found):
+        return found  # build123d input: already a ShapeList[Vertex]
+    return wrap_vertices([v.wrapped for v in _as_list(found)])
 
 
 def intersections(a: Any, b: Any = None, *, tol: float | None = None) -> list[EdgeResult]:
@@ -102,7 +105,10 @@ def split(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
     >>> len(split(bd.Edge.make_line((-2, 0), (2, 0)), bd.Edge.make_circle(1.0)))
     3
     """
-    return wrap_edges([e.wrapped if hasattr(e, "wrapped") else e for e in api.split(a, b, tol=tol)])
+    pieces = api.split(a, b, tol=tol)
+    if isinstance(pieces, _bd.ShapeList) and all(isinstance(e, _bd.Edge) for e in pieces):
+        return pieces  # build123d input: already a ShapeList[Edge]
+    return wrap_edges([e.wrapped if hasattr(e, "wrapped") else e for e in pieces])
 
 
 def _as_list(vertices: Any) -> list[Any]:

@@ -757,8 +757,7 @@ def make_vertex(point: Sequence[float]) -> TopoDS_Vertex:
     >>> BRep_Tool.Pnt_s(make_vertex((1.0, 2.0, 3.0))).Coord()
     (1.0, 2.0, 3.0)
     """
-    x, y, z = (float(c) for c in point)
-    return BRepBuilderAPI_MakeVertex(gp_Pnt(x, y, z)).Vertex()
+    return BRepBuilderAPI_MakeVertex(gp_Pnt(float(point[0]), float(point[1]), float(point[2]))).Vertex()
 
 
 def trim_edge(edge: Any, t0: float, t1: float) -> TopoDS_Edge:
