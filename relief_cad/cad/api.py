@@ -198,6 +198,8 @@ class _EdgeInfo:
     rows: list[list[list[float]]]  # every segment's homogeneous rows as Python floats
     lows: list[tuple[float, float, float]]  # lower corner of every segment's control-point box
     highs: list[tuple[float, float, float]]  # upper corners
+    xy: list[list[float]]  # every segment's control points (x, y), back to back
+    ws: list[float]  # and their weights
     lo: tuple[float, float, float]  # the edge's box
     hi: tuple[float, float, float]
     tolerance: float
@@ -224,7 +226,7 @@ def _prepare(shape: Any) -> list[_EdgeInfo]:
             continue
         segs = ocp.edge_segments(edge)
         rows = [s.homogeneous.tolist() for s in segs]
-        lows, highs = _boxes(rows)
+        lows, highs, xy, ws = _boxes(rows)
         if len(segs) == 1:
             lo, hi = lows[0], highs[0]
         else:
@@ -238,6 +240,8 @@ def _prepare(shape: Any) -> list[_EdgeInfo]:
                 rows=rows,
                 lows=lows,
                 highs=highs,
+                xy=xy,
+                ws=ws,
                 lo=lo,
                 hi=hi,
                 tolerance=BRep_Tool.Tolerance_s(edge),
@@ -252,17 +256,27 @@ def _prepare(shape: Any) -> list[_EdgeInfo]:
 _Point3 = tuple[float, float, float]
 
 
-def _boxes(rows: list[list[list[float]]]) -> tuple[list[_Point3], list[_Point3]]:
-    """Lower and upper corners of the segments' control-point boxes (Python floats: tiny arrays)."""
+def _boxes(
+    rows: list[list[list[float]]],
+) -> tuple[list[_Point3], list[_Point3], list[list[float]], list[float]]:
+    """Corners of the segments' control-point boxes, and their points ``[x, y]`` and weights, packed.
+
+    Python floats: the arrays are tiny. The ``[x, y]`` rows are the planar control
+    points in the XY frame, as :func:`_curve2d` computes them.
+    """
     lows: list[_Point3] = []
     highs: list[_Point3] = []
+    xy: list[list[float]] = []
+    ws: list[float] = []
     for seg in rows:
         xs = [r[0] / r[3] for r in seg]
         ys = [r[1] / r[3] for r in seg]
         zs = [r[2] / r[3] for r in seg]
         lows.append((min(xs), min(ys), min(zs)))
         highs.append((max(xs), max(ys), max(zs)))
-    return lows, highs
+        xy.extend(map(list, zip(xs, ys, strict=True)))
+        ws.extend(r[3] for r in seg)
+    return lows, highs, xy, ws
 
 
 def _all_points(infos: list[_EdgeInfo]) -> np.ndarray:
@@ -446,19 +460,17 @@ def _planar_arrays(e: _EdgeInfo) -> tuple[list[list[float]], list[float], list[i
         if frame is None:
             raise InvalidInputError("internal: no common frame set")  # pragma: no cover
         offsets = [0]
+        for seg in e.rows:
+            offsets.append(offsets[-1] + len(seg))
         pts: list[list[float]] = []
         ws: list[float] = []
         if frame is _XY_FRAME:
-            for seg in e.rows:
-                pts.extend([r[0] / r[3], r[1] / r[3]] for r in seg)
-                ws.extend(r[3] for r in seg)
-                offsets.append(len(ws))
+            pts, ws = e.xy, e.ws
         else:
             for s in e.segs:
                 for x, y, w in _to_plane(s, frame).homogeneous.tolist():
                     pts.append([x / w, y / w])
                     ws.append(w)
-                offsets.append(len(ws))
         e._packed = (pts, ws, offsets)
     return e._packed
 

@@ -304,10 +304,11 @@ def unwrap(obj: Any) -> TopoDS_Shape:
     ...
     relief_cad.errors.InputTypeError: expected a TopoDS_Shape, a build123d or CadQuery shape, ...
     """
+    wrapped = None if isinstance(obj, TopoDS_Shape) else getattr(obj, "wrapped", None)
     if isinstance(obj, TopoDS_Shape):
         shape = obj
-    elif hasattr(obj, "wrapped") and isinstance(obj.wrapped, TopoDS_Shape):
-        shape = obj.wrapped
+    elif isinstance(wrapped, TopoDS_Shape):
+        shape = wrapped
     elif hasattr(obj, "vals") and callable(obj.vals) and type(obj).__name__ == "Workplane":
         shape = make_compound([unwrap(v) for v in obj.vals() if hasattr(v, "wrapped")])
     elif isinstance(obj, (list, tuple)):
