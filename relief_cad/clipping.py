@@ -181,7 +181,7 @@ def clip_range(nodes: FloatArray, weights: FloatArray | None,
 
 
 def intersect_packed(points: FloatArray, weights: FloatArray, offsets: FloatArray, pairs: FloatArray,
-                     tol: float | None = None, budget: int = 20_000) -> FloatArray:
+                     tol: float | None = None, budget: int = 500_000) -> FloatArray:
     """Intersect many planar curve pairs given as packed arrays; return raw result rows.
 
     The fastest entry point (no Python objects per pair): one compiled call.

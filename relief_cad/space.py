@@ -53,6 +53,7 @@ from ._kernels import (
 from ._types import FloatArray
 from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError, ToleranceError
+from .intersection import DEFAULT_BUDGET
 from .relief import ReliefPerspective, central_projection
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result
 from .tolerances import default_tolerance
@@ -60,7 +61,6 @@ from .tolerances import default_tolerance
 __all__ = ["ReliefFrame", "ReliefScheme", "intersect_space", "relief_scheme"]
 
 _KIND_NAMES: dict[int, Literal["crossing", "tangent"]] = {0: "crossing", 1: "tangent"}
-DEFAULT_BUDGET = 20000
 
 
 @dataclass(frozen=True)
