@@ -226,12 +226,12 @@ def _prepare(shape: Any) -> list[_EdgeInfo]:
             continue
         segs = ocp.edge_segments(edge)
         rows = [s.homogeneous.tolist() for s in segs]
-        lows, highs, xy, ws = _boxes(rows)
+        lows, highs, xy, ws = _boxes(segs, rows)
         if len(segs) == 1:
             lo, hi = lows[0], highs[0]
         else:
-            lo = (min(b[0] for b in lows), min(b[1] for b in lows), min(b[2] for b in lows))
-            hi = (max(b[0] for b in highs), max(b[1] for b in highs), max(b[2] for b in highs))
+            lo = tuple(map(min, zip(*lows, strict=True)))  # type: ignore[assignment]
+            hi = tuple(map(max, zip(*highs, strict=True)))  # type: ignore[assignment]
         infos.append(
             _EdgeInfo(
                 index=index,
@@ -257,26 +257,33 @@ _Point3 = tuple[float, float, float]
 
 
 def _boxes(
-    rows: list[list[list[float]]],
+    segs: list[ocp.Segment], rows: list[list[list[float]]],
 ) -> tuple[list[_Point3], list[_Point3], list[list[float]], list[float]]:
     """Corners of the segments' control-point boxes, and their points ``[x, y]`` and weights, packed.
 
-    Python floats: the arrays are tiny. The ``[x, y]`` rows are the planar control
-    points in the XY frame, as :func:`_curve2d` computes them.
+    The ``[x, y]`` rows are the planar control points in the XY frame, as
+    :func:`_curve2d` computes them (the same divisions). A few segments: Python
+    floats (the arrays are tiny); many: one numpy pass over all of them.
     """
-    lows: list[_Point3] = []
-    highs: list[_Point3] = []
-    xy: list[list[float]] = []
-    ws: list[float] = []
-    for seg in rows:
-        xs = [r[0] / r[3] for r in seg]
-        ys = [r[1] / r[3] for r in seg]
-        zs = [r[2] / r[3] for r in seg]
-        lows.append((min(xs), min(ys), min(zs)))
-        highs.append((max(xs), max(ys), max(zs)))
-        xy.extend(map(list, zip(xs, ys, strict=True)))
-        ws.extend(r[3] for r in seg)
-    return lows, highs, xy, ws
+    if len(rows) <= 8:
+        lows: list[_Point3] = []
+        highs: list[_Point3] = []
+        xy: list[list[float]] = []
+        ws: list[float] = []
+        for seg in rows:
+            cart = [(x / w, y / w, z / w) for x, y, z, w in seg]
+            xs, ys, zs = zip(*cart, strict=True)
+            lows.append((min(xs), min(ys), min(zs)))
+            highs.append((max(xs), max(ys), max(zs)))
+            xy.extend([c[0], c[1]] for c in cart)
+            ws.extend([r[3] for r in seg])
+        return lows, highs, xy, ws
+    h = np.concatenate([s.homogeneous for s in segs])
+    points = h[:, :3] / h[:, 3:]
+    starts = np.cumsum([0] + [len(r) for r in rows[:-1]])
+    lows = [tuple(c) for c in np.minimum.reduceat(points, starts, axis=0).tolist()]
+    highs = [tuple(c) for c in np.maximum.reduceat(points, starts, axis=0).tolist()]
+    return lows, highs, points[:, :2].tolist(), h[:, 3].tolist()
 
 
 def _all_points(infos: list[_EdgeInfo]) -> np.ndarray:

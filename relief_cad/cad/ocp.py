@@ -405,12 +405,8 @@ def _location_matrix(loc: TopLoc_Location) -> np.ndarray | None:
     """Return the 3x4 matrix of a location (``None`` for the identity)."""
     if loc.IsIdentity():
         return None
-    trsf = loc.Transformation()
-    m = np.empty((3, 4))
-    for r in range(3):
-        for c in range(4):
-            m[r, c] = trsf.Value(r + 1, c + 1)
-    return m
+    value = loc.Transformation().Value
+    return np.array([[value(r, c) for c in (1, 2, 3, 4)] for r in (1, 2, 3)])
 
 
 def _apply(h: np.ndarray, m: np.ndarray | None) -> np.ndarray:
@@ -687,14 +683,15 @@ def _curve_segments(
 
 def _check_length(segs: list[Segment]) -> list[Segment]:
     """Refuse free-form edges whose control points all coincide (lines and conics cannot)."""
-    first = segs[0].homogeneous
-    p0 = first[0, :3] / first[0, 3]
+    x0, y0, z0, w0 = segs[0].homogeneous[0].tolist()
+    p0 = (x0 / w0, y0 / w0, z0 / w0)
+    px, py, pz = p0
     for seg in segs:  # usually decided by the first segment
-        h = seg.homogeneous
-        if (h[:, :3] != h[:, 3:] * p0).any():
-            return segs
+        for x, y, z, w in seg.homogeneous.tolist():
+            if x != w * px or y != w * py or z != w * pz:
+                return segs
     raise DegenerateCurveError(
-        f"expected an edge of non-zero length; received one whose every control point is {p0.tolist()}"
+        f"expected an edge of non-zero length; received one whose every control point is {list(p0)}"
     )
 
 
