@@ -35,6 +35,11 @@ The planar solver (one numba kernel, :mod:`relief_cad._kernels`):
 Accuracy: transversal crossings to a few ulps of the parameters (1e-13 on the
 certified corpus, including degree-20 Chebyshev-like curves and crossings 1e-8
 apart); tangent contacts to about ``sqrt(eps)`` (1e-8).
+
+>>> from relief_cad.curves import RationalBezier
+>>> loop = RationalBezier([[0, 0], [3, 3], [-1, 3], [2, 0]])
+>>> [(round(r.t, 6), round(r.u, 6), r.kind) for r in intersect(loop)]   # its double point, t < u
+[(0.172673, 0.827327, 'crossing')]
 """
 
 from __future__ import annotations
