@@ -157,15 +157,21 @@ def flavour_of(obj: Any) -> str:
     return "ocp"
 
 
+_WRAPPERS: dict[str, Any] = {}  # flavour -> its adapter module, imported on first use
+
+
+def _wrapper(flavour: str) -> Any:
+    module = _WRAPPERS.get(flavour)
+    if module is None:
+        import importlib
+
+        module = _WRAPPERS[flavour] = importlib.import_module(f"{__package__}.{flavour}")
+    return module
+
+
 def _wrap_vertices(vertices: list[Any], flavour: str) -> Any:
-    if flavour == "build123d":
-        from .build123d import wrap_vertices
-
-        return wrap_vertices(vertices)
-    if flavour == "cadquery":
-        from .cadquery import wrap_vertices as cq_wrap_vertices
-
-        return cq_wrap_vertices(vertices)
+    if flavour == "build123d" or flavour == "cadquery":
+        return _wrapper(flavour).wrap_vertices(vertices)
     return vertices
 
 
