@@ -415,10 +415,16 @@ class _Job:
 _Found = tuple[str, float, float, float, float, float]
 
 
-def _pair_jobs(ea: _EdgeInfo, eb: _EdgeInfo, same: bool, tol: float, planar: bool) -> list[_Job]:
-    """The segment pairs of one edge pair whose boxes (widened by ``tol``) overlap."""
+def _pair_jobs(
+    ea: _EdgeInfo, eb: _EdgeInfo, same: bool, tol: float, planar: bool, all_edges: bool = False
+) -> list[_Job]:
+    """The segment pairs of one edge pair whose boxes (widened by ``tol``) overlap.
+
+    ``all_edges``: the pair holds every edge taking part, so when there is no common
+    plane (``planar`` False) the pair has none either (the same points were tested).
+    """
     frame = None
-    if not planar:
+    if not planar and not all_edges:
         frame = ocp.planar_frame(
             np.vstack([s.control_points for s in (ea.segs + ([] if same else eb.segs))]),
             tol * _PLANE_FRACTION,
@@ -729,7 +735,7 @@ def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float, lis
         ea, eb = infos_a[ia], infos_b[ib]
         same = b is None and ia == ib
         edge_pairs.append((ea, eb, same))
-        jobs.extend(_pair_jobs(ea, eb, same, ftol, planar))
+        jobs.extend(_pair_jobs(ea, eb, same, ftol, planar, len(everyone) == (1 if same else 2)))
     per_pair: dict[tuple[int, int], list[_Raw]] = {}
     for job, found in zip(jobs, _solve(jobs, ftol), strict=True):
         if found:
