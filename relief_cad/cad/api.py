@@ -2,8 +2,13 @@
 
 The adapters convert; they do not compute. Every edge is converted exactly to
 rational Bézier segments (:func:`relief_cad.cad.ocp.edge_segments`), segment
-pairs whose boxes overlap go to :func:`relief_cad.intersect`, and the answers
-are mapped back to the edges' own OCCT parameters and to native geometry.
+pairs whose boxes overlap go to the core intersector, and the answers are
+mapped back to the edges' own OCCT parameters and to native geometry. Planar
+pairs in the common frame go, all in one call, straight to the compiled batch
+kernel that :func:`relief_cad.intersect_many` runs (same kernel, same
+tolerance and budget, hence the same answers as :func:`relief_cad.intersect`,
+without building a ``RationalBezier`` per segment); the others (space pairs,
+a segment against itself) go through :func:`relief_cad.intersect`.
 
 Inputs ``a`` and ``b`` may be edges, wires, faces, solids, compounds or lists of
 them, as build123d shapes, CadQuery shapes / ``Workplane`` objects or raw
