@@ -501,24 +501,34 @@ def _planar_arrays(e: _EdgeInfo) -> tuple[list[list[float]], list[float], list[i
 
 def _solve_packed(jobs: list[_Job], tol: float) -> list[list[_Found]]:
     """Planar jobs in the common frame: one call of the batch kernel on packed control points."""
-    pts: list[list[float]] = []
-    ws: list[float] = []
-    offsets: list[int] = [0]
-    starts: dict[int, int] = {}  # id(edge info) -> index of its first segment among the packed curves
-    for job in jobs:
-        for e in (job.ea, job.eb):
-            if id(e) not in starts:
-                e_pts, e_ws, e_offsets = _planar_arrays(e)
-                starts[id(e)] = len(offsets) - 1
-                shift = len(ws)
-                pts.extend(e_pts)
-                ws.extend(e_ws)
-                offsets.extend([shift + o for o in e_offsets[1:]])
-    P = np.array(pts)
-    W = np.array(ws)
+    job = jobs[0]
+    if len(jobs) == 1 and job.ea is not job.eb:
+        pts_a, ws_a, offsets_a = _planar_arrays(job.ea)
+        pts_b, ws_b, offsets_b = _planar_arrays(job.eb)
+        shift = len(ws_a)
+        offsets = offsets_a + [shift + o for o in offsets_b[1:]]
+        P = np.array(pts_a + pts_b)
+        W = np.array(ws_a + ws_b)
+        pairs = np.array([(job.i, len(offsets_a) - 1 + job.j)], dtype=np.int64)
+    else:
+        pts: list[list[float]] = []
+        ws: list[float] = []
+        offsets = [0]
+        starts: dict[int, int] = {}  # id(edge info) -> index of its first segment among the packed curves
+        for job in jobs:
+            for e in (job.ea, job.eb):
+                if id(e) not in starts:
+                    e_pts, e_ws, e_offsets = _planar_arrays(e)
+                    starts[id(e)] = len(offsets) - 1
+                    shift = len(ws)
+                    pts.extend(e_pts)
+                    ws.extend(e_ws)
+                    offsets.extend([shift + o for o in e_offsets[1:]])
+        P = np.array(pts)
+        W = np.array(ws)
+        pairs = np.array([(starts[id(j.ea)] + j.i, starts[id(j.eb)] + j.j) for j in jobs], dtype=np.int64)
     P.flags.writeable = False
     W.flags.writeable = False
-    pairs = np.array([(starts[id(j.ea)] + j.i, starts[id(j.eb)] + j.j) for j in jobs], dtype=np.int64)
     packed_offsets = np.array(offsets, dtype=np.int64)
     tols = np.array([tol] * len(jobs))
     rows = intersect_batch_kernel(P, W, packed_offsets, pairs, tols, DEFAULT_BUDGET).tolist()
