@@ -184,7 +184,13 @@ class Segment:
 
     @property
     def t_range(self) -> tuple[float, float]:
-        """The edge-parameter range ``(t0, t1)`` the segment covers."""
+        """The edge-parameter range ``(t0, t1)`` the segment covers.
+
+        >>> import build123d as bd
+        >>> from relief_cad.cad import segments
+        >>> segments(bd.Line((0, 0), (3, 4)))[0].t_range
+        (0.0, 5.0)
+        """
         return (self.t0, self.t1)
 
     def edge_param(self, s: Any) -> Any:
