@@ -53,7 +53,7 @@ from ._kernels import (
 from ._types import FloatArray
 from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError, ToleranceError
-from .intersection import DEFAULT_BUDGET
+from .intersection import _check_budget, _check_on_budget, _finish
 from .relief import ReliefPerspective, central_projection
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result
 from .tolerances import default_tolerance
@@ -346,7 +346,8 @@ def intersect_space(
             f"{type(a).__name__} and {type(b).__name__}"
         )
     a3 = a if a.dim == 3 else a.embedded(3)
-    nbudget = DEFAULT_BUDGET if budget is None else int(budget)
+    _check_on_budget(on_budget)
+    nbudget = _check_budget(budget)
     if b is None:
         rows = _self_rows(a3, _check_tol(tol, a3), nbudget, k)
     else:
@@ -355,11 +356,4 @@ def intersect_space(
         rows = _pair(a3.homogeneous, b3.homogeneous, tol_v, nbudget, k)
     items, boxes = _rows_to_results(rows)
     items.sort(key=lambda r: r.t if isinstance(r, Intersection) else r.t[0])
-    out = IntersectionList(items, boxes)
-    if boxes and on_budget == "raise":
-        raise BudgetExceededError(
-            f"the clipping budget ran out with {len(boxes)} parameter box(es) unresolved; "
-            "pass a larger budget= or on_budget='return'",
-            partial=list(out), unresolved=boxes,
-        )
-    return out
+    return _finish(IntersectionList(items, boxes), on_budget)
