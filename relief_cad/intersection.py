@@ -330,9 +330,9 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
     _check_on_budget(on_budget)
     nbudget = _check_budget(budget)
     if a.dim == 3 or (b is not None and b.dim == 3):
-        from .space import intersect_space  # type: ignore[attr-defined]
+        from .space import intersect_space
 
-        result: IntersectionList = intersect_space(a, b, tol=tol, budget=budget)
+        result: IntersectionList = intersect_space(a, b, tol=tol, budget=budget, on_budget=on_budget)
         return result
     if b is None:
         ftol = default_tolerance(a) if tol is None else _check_tol(tol)

@@ -342,3 +342,12 @@ def test_budget_exhaustion_is_reported_never_silent() -> None:
     assert not partial.complete and partial.unresolved
     for box in partial.unresolved:
         assert 0.0 <= box.t0 <= box.t1 <= 1.0 and 0.0 <= box.u0 <= box.u1 <= 1.0
+
+
+def test_public_intersect_forwards_on_budget_to_the_space_path() -> None:
+    from relief_cad import intersect
+
+    a, b, _, _ = meeting_pair(5)
+    partial = intersect(a, b, budget=1, on_budget="return")
+    assert not partial.complete
+    assert len(intersect(a, b)) == 1
