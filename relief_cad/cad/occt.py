@@ -50,6 +50,7 @@ from typing import Any, Literal
 import numpy as np
 
 from ..errors import InputTypeError, InvalidInputError, OcctError, ShapeError
+from .api import flavour_of
 from .results import EdgeIntersection, EdgeOverlap, EdgeResult
 
 __all__ = [
@@ -84,15 +85,6 @@ def _topods(shape: Any) -> Any:
     if raw.IsNull():
         raise ShapeError("expected a non-null shape, received a null TopoDS_Shape")
     return raw
-
-
-def _flavour(shape: Any) -> str:
-    mod = type(shape).__module__
-    if mod.startswith("build123d"):
-        return "build123d"
-    if mod.startswith("cadquery"):
-        return "cadquery"
-    return "ocp"
 
 
 def _native_edge(edge: Any, flavour: str) -> Any:
@@ -597,14 +589,14 @@ def occt_intersections(
 
     if route not in ROUTES:
         raise InvalidInputError(f"expected route in {ROUTES}, received {route!r}")
-    flavour_a = _flavour(a)
+    flavour_a = flavour_of(a)
     edges_a = unique_edges(a)
     if not edges_a:
         raise ShapeError(f"expected a shape with edges, received a {type(a).__name__} with no edges")
     if b is None:
         edges_b, flavour_b = edges_a, flavour_a
     else:
-        flavour_b = _flavour(b)
+        flavour_b = flavour_of(b)
         edges_b = unique_edges(b)
         if not edges_b:
             raise ShapeError(f"expected a shape with edges, received a {type(b).__name__} with no edges")
