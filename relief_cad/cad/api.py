@@ -41,23 +41,17 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+from OCP.BRep import BRep_Tool
+from OCP.TopExp import TopExp
 
 from .._kernels import KIND_CROSSING, KIND_TANGENT, KIND_UNRESOLVED, intersect_batch_kernel
 from ..curves import RationalBezier
-from ..errors import AdapterUnavailableError, InvalidInputError
+from ..errors import InvalidInputError
 from ..intersection import DEFAULT_BUDGET
 from ..results import Intersection, Overlap
 from ..tolerances import default_tolerance
 from . import ocp
 from .results import EdgeIntersection, EdgeOverlap, EdgeResult
-
-try:
-    from OCP.BRep import BRep_Tool
-    from OCP.TopExp import TopExp
-except ImportError as exc:  # pragma: no cover - ocp above raises first
-    raise AdapterUnavailableError(
-        'relief_cad.cad needs OCP (cadquery-ocp); install it with: pip install "relief-cad[cad]"'
-    ) from exc
 
 __all__ = ["flavour_of", "intersect", "intersections", "planar_curves", "segments", "split"]
 

@@ -22,7 +22,7 @@ try:
     import build123d as _bd
 except ImportError as exc:  # pragma: no cover - exercised only without build123d
     raise AdapterUnavailableError(
-        'relief_cad.cad.build123d needs build123d; install it with: pip install "relief-cad[cad]"'
+        'relief_cad.cad.build123d needs build123d; install it with: pip install "relief-cad[build123d]"'
     ) from exc
 
 from . import api

@@ -27,7 +27,7 @@ try:
     import cadquery as _cq
 except ImportError as exc:  # pragma: no cover - exercised only without CadQuery
     raise AdapterUnavailableError(
-        'relief_cad.cad.cadquery needs CadQuery; install it with: pip install "relief-cad[cad]"'
+        'relief_cad.cad.cadquery needs CadQuery; install it with: pip install "relief-cad[cadquery]"'
     ) from exc
 
 from . import api

@@ -50,6 +50,7 @@ from typing import Any, Literal
 import numpy as np
 
 from ..errors import InputTypeError, InvalidInputError, OcctError, ShapeError
+from ._compat import ListOfShape, downcast_edge, downcast_vertex
 from .api import flavour_of
 from .results import EdgeIntersection, EdgeOverlap, EdgeResult
 
@@ -123,13 +124,12 @@ def unique_edges(shape: Any) -> list[Any]:
     """
     from OCP.TopAbs import TopAbs_EDGE
     from OCP.TopExp import TopExp_Explorer
-    from OCP.TopoDS import TopoDS
 
     raw = _topods(shape)
     edges: list[Any] = []
     explorer = TopExp_Explorer(raw, TopAbs_EDGE)
     while explorer.More():
-        edge = TopoDS.Edge_s(explorer.Current())
+        edge = downcast_edge(explorer.Current())
         if not any(edge.IsSame(e) for e in edges):
             edges.append(edge)
         explorer.Next()
@@ -411,11 +411,9 @@ def _route_section(da: _EdgeData, db: _EdgeData, tol: float) -> list[_Raw]:
     from OCP.BRepAlgoAPI import BRepAlgoAPI_Section
     from OCP.TopAbs import TopAbs_EDGE, TopAbs_VERTEX
     from OCP.TopExp import TopExp_Explorer
-    from OCP.TopoDS import TopoDS
-    from OCP.TopTools import TopTools_ListOfShape
 
     section = BRepAlgoAPI_Section()
-    args, tools = TopTools_ListOfShape(), TopTools_ListOfShape()
+    args, tools = ListOfShape(), ListOfShape()
     args.Append(da.edge)
     tools.Append(db.edge)
     section.SetArguments(args)
@@ -429,7 +427,7 @@ def _route_section(da: _EdgeData, db: _EdgeData, tol: float) -> list[_Raw]:
     covered: list[tuple[float, float]] = []
     ex = TopExp_Explorer(result, TopAbs_EDGE)
     while ex.More():
-        e = TopoDS.Edge_s(ex.Current())
+        e = downcast_edge(ex.Current())
         f, l_ = BRep_Tool.Range_s(e)
         c = BRep_Tool.Curve_s(e, 0.0, 0.0)
         p0, p1 = c.Value(f), c.Value(l_)
@@ -442,7 +440,7 @@ def _route_section(da: _EdgeData, db: _EdgeData, tol: float) -> list[_Raw]:
         ex.Next()
     ex = TopExp_Explorer(result, TopAbs_VERTEX, TopAbs_EDGE)
     while ex.More():
-        v = TopoDS.Vertex_s(ex.Current())
+        v = downcast_vertex(ex.Current())
         p = BRep_Tool.Pnt_s(v)
         t, u = _project_param(da, p), _project_param(db, p)
         if not any(lo - 1e-12 <= t <= hi + 1e-12 for lo, hi in covered):
@@ -471,13 +469,12 @@ def _shared_vertex_points(ea: Any, eb: Any) -> list[tuple[float, float, float]]:
     from OCP.BRep import BRep_Tool
     from OCP.TopAbs import TopAbs_VERTEX
     from OCP.TopExp import TopExp_Explorer
-    from OCP.TopoDS import TopoDS
 
     def verts(e: Any) -> list[Any]:
         ex = TopExp_Explorer(e, TopAbs_VERTEX)
         vs = []
         while ex.More():
-            vs.append(TopoDS.Vertex_s(ex.Current()))
+            vs.append(downcast_vertex(ex.Current()))
             ex.Next()
         return vs
 

@@ -44,46 +44,37 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+from OCP.BRep import BRep_Builder, BRep_Tool
+from OCP.BRepAdaptor import BRepAdaptor_Curve
+from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeVertex
+from OCP.Geom import (
+    Geom_BezierCurve,
+    Geom_BSplineCurve,
+    Geom_Circle,
+    Geom_Ellipse,
+    Geom_Hyperbola,
+    Geom_Line,
+    Geom_Parabola,
+    Geom_TrimmedCurve,
+)
+from OCP.Geom2d import Geom2d_BezierCurve
+from OCP.GeomAbs import GeomAbs_Shape
+from OCP.GeomConvert import GeomConvert_ApproxCurve, GeomConvert_BSplineCurveToBezierCurve
+from OCP.gp import gp_Pnt, gp_Pnt2d
+from OCP.TopAbs import TopAbs_EDGE
+from OCP.TopExp import TopExp
+from OCP.TopLoc import TopLoc_Location
+from OCP.TopoDS import TopoDS_Compound, TopoDS_Edge, TopoDS_Shape, TopoDS_Vertex
 
 from ..curves import RationalBezier
 from ..errors import (
-    AdapterUnavailableError,
     DegenerateCurveError,
     InputTypeError,
     InvalidInputError,
     OcctError,
     UnsupportedCurveError,
 )
-
-try:
-    from OCP.BRep import BRep_Builder, BRep_Tool
-    from OCP.BRepAdaptor import BRepAdaptor_Curve
-    from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeVertex
-    from OCP.Geom import (
-        Geom_BezierCurve,
-        Geom_BSplineCurve,
-        Geom_Circle,
-        Geom_Ellipse,
-        Geom_Hyperbola,
-        Geom_Line,
-        Geom_Parabola,
-        Geom_TrimmedCurve,
-    )
-    from OCP.Geom2d import Geom2d_BezierCurve
-    from OCP.GeomAbs import GeomAbs_Shape
-    from OCP.GeomConvert import GeomConvert_ApproxCurve, GeomConvert_BSplineCurveToBezierCurve
-    from OCP.gp import gp_Pnt, gp_Pnt2d
-    from OCP.TColgp import TColgp_Array1OfPnt, TColgp_Array1OfPnt2d
-    from OCP.TColStd import TColStd_Array1OfReal
-    from OCP.TopAbs import TopAbs_EDGE
-    from OCP.TopExp import TopExp
-    from OCP.TopLoc import TopLoc_Location
-    from OCP.TopoDS import TopoDS, TopoDS_Compound, TopoDS_Edge, TopoDS_Shape, TopoDS_Vertex
-    from OCP.TopTools import TopTools_IndexedMapOfShape
-except ImportError as exc:  # pragma: no cover - exercised only without the CAD stack
-    raise AdapterUnavailableError(
-        'relief_cad.cad needs OCP (cadquery-ocp); install it with: pip install "relief-cad[cad]"'
-    ) from exc
+from ._compat import Array1OfPnt, Array1OfPnt2d, Array1OfReal, IndexedMapOfShape, downcast_edge
 
 __all__ = [
     "APPROXIMATION_TOLERANCE",
@@ -372,9 +363,9 @@ def edges_of(shape: Any) -> list[TopoDS_Edge]:
     raw = unwrap(shape)
     if isinstance(raw, TopoDS_Edge):
         return [raw]
-    emap = TopTools_IndexedMapOfShape()
+    emap = IndexedMapOfShape()
     TopExp.MapShapes_s(raw, TopAbs_EDGE, emap)
-    return [TopoDS.Edge_s(emap.FindKey(i)) for i in range(1, emap.Extent() + 1)]
+    return [downcast_edge(emap.FindKey(i)) for i in range(1, emap.Extent() + 1)]
 
 
 def edge_tolerance(edge: Any) -> float:
@@ -398,7 +389,7 @@ def _as_edge(edge: Any) -> TopoDS_Edge:
         raise InputTypeError("expected an edge; received a null shape")
     if not isinstance(raw, TopoDS_Edge):
         if raw.ShapeType() == TopAbs_EDGE:
-            return TopoDS.Edge_s(raw)
+            return downcast_edge(raw)
         raise InputTypeError(
             f"expected an edge; received a {raw.ShapeType().name.replace('TopAbs_', '').lower()} shape "
             "(use edges_of() or the intersection functions for wires, faces and solids)"
@@ -564,7 +555,7 @@ def _bspline_segments(curve: Any, first: float, last: float, m: np.ndarray | Non
     except Exception as exc:  # noqa: BLE001 - OCCT raises Standard_Failure subclasses
         raise OcctError(f"GeomConvert_BSplineCurveToBezierCurve failed on [{first}, {last}]: {exc}") from exc
     n = conv.NbArcs()
-    knots = TColStd_Array1OfReal(1, n + 1)
+    knots = Array1OfReal(1, n + 1)
     conv.Knots(knots)
     ks = [knots.Value(i) for i in range(1, n + 2)]
     ks[0] = first
@@ -794,8 +785,8 @@ def trim_edge(edge: Any, t0: float, t1: float) -> TopoDS_Edge:
         raise OcctError(f"BRepBuilderAPI_MakeEdge failed on [{lo}, {hi}] (error {maker.Error()})")
     new = maker.Edge()
     if not loc.IsIdentity():
-        new = TopoDS.Edge_s(new.Located(loc))
-    return TopoDS.Edge_s(new.Oriented(e.Orientation()))
+        new = downcast_edge(new.Located(loc))
+    return downcast_edge(new.Oriented(e.Orientation()))
 
 
 def to_geom_bezier(curve: RationalBezier) -> Geom_BezierCurve:
@@ -814,7 +805,7 @@ def to_geom_bezier(curve: RationalBezier) -> Geom_BezierCurve:
     """
     _check_degree(curve)
     pts = curve.control_points
-    arr = TColgp_Array1OfPnt(1, len(pts))
+    arr = Array1OfPnt(1, len(pts))
     for i, p in enumerate(pts):
         arr.SetValue(i + 1, gp_Pnt(float(p[0]), float(p[1]), float(p[2]) if curve.dim == 3 else 0.0))
     if curve.is_polynomial:
@@ -839,7 +830,7 @@ def to_geom2d_bezier(curve: RationalBezier) -> Geom2d_BezierCurve:
         raise InvalidInputError(f"expected a planar curve (dim 2) for Geom2d; received dim {curve.dim}")
     _check_degree(curve)
     pts = curve.control_points
-    arr = TColgp_Array1OfPnt2d(1, len(pts))
+    arr = Array1OfPnt2d(1, len(pts))
     for i, p in enumerate(pts):
         arr.SetValue(i + 1, gp_Pnt2d(float(p[0]), float(p[1])))
     if curve.is_polynomial:
@@ -854,8 +845,8 @@ def _check_degree(curve: RationalBezier) -> None:
         )
 
 
-def _weights_array(curve: RationalBezier) -> TColStd_Array1OfReal:
-    w = TColStd_Array1OfReal(1, curve.degree + 1)
+def _weights_array(curve: RationalBezier) -> Array1OfReal:
+    w = Array1OfReal(1, curve.degree + 1)
     for i, wi in enumerate(curve.weights):
         w.SetValue(i + 1, float(wi))
     return w
