@@ -39,9 +39,12 @@ from typing import Any, Literal
 
 import numpy as np
 
-from ..errors import InvalidInputError, ShapeError
-from .occt import default_occt_tolerance, occt_intersections, unique_edges
+from ..errors import InvalidInputError
+from ._checks import check_tol
+from .curvetypes import basis_curve, curve_kind
+from .occt import default_occt_tolerance, occt_intersections
 from .results import EdgeIntersection, EdgeOverlap, EdgeResult
+from .topology import edges_of, usable_edges
 
 __all__ = [
     "ARBITER_DIGITS",
@@ -105,6 +108,11 @@ class ExactCurve:
         self._identity = loc.IsIdentity()
         self._occt_curve = BRep_Tool.Curve_s(raw, 0.0, 0.0)
         self.exact = True
+        if curve is None:  # only curves on surfaces: OCCT's binary64 evaluation, global coordinates
+            from OCP.BRepAdaptor import BRepAdaptor_Curve
+
+            self._occt_curve = curve = BRepAdaptor_Curve(raw)
+            self._identity = True
         self._eval = self._build(curve)
         pts = [self._occt_curve.Value(float(t)) for t in np.linspace(self.first, self.last, 9)]
         arr = np.array([[p.X(), p.Y(), p.Z()] for p in pts])
@@ -114,43 +122,31 @@ class ExactCurve:
         return self.mp.mpf(float(x))
 
     def _build(self, curve: Any) -> Any:
-        from OCP.Geom import (
-            Geom_BezierCurve,
-            Geom_BSplineCurve,
-            Geom_Circle,
-            Geom_Ellipse,
-            Geom_Hyperbola,
-            Geom_Line,
-            Geom_Parabola,
-            Geom_TrimmedCurve,
-        )
-
         mp, f = self.mp, self._f
-        while isinstance(curve, Geom_TrimmedCurve):
-            curve = curve.BasisCurve()
+        kind, curve = curve_kind(curve), basis_curve(curve)
 
         def vec(v: Any) -> list[Any]:
             return [f(v.X()), f(v.Y()), f(v.Z())]
 
-        if isinstance(curve, Geom_Line):
+        if kind == "line":
             ax = curve.Position()
             p, d = vec(ax.Location()), vec(ax.Direction())
             return lambda t: [p[k] + t * d[k] for k in range(3)]  # noqa: B023
-        if isinstance(curve, (Geom_Circle, Geom_Ellipse, Geom_Hyperbola, Geom_Parabola)):
+        if kind in ("circle", "ellipse", "hyperbola", "parabola"):
             ax = curve.Position()
             c, x, y = vec(ax.Location()), vec(ax.XDirection()), vec(ax.YDirection())
-            if isinstance(curve, Geom_Circle):
+            if kind == "circle":
                 r = f(curve.Radius())
                 return lambda t: [c[k] + r * (mp.cos(t) * x[k] + mp.sin(t) * y[k]) for k in range(3)]
-            if isinstance(curve, Geom_Ellipse):
+            if kind == "ellipse":
                 ra, rb = f(curve.MajorRadius()), f(curve.MinorRadius())
                 return lambda t: [c[k] + ra * mp.cos(t) * x[k] + rb * mp.sin(t) * y[k] for k in range(3)]
-            if isinstance(curve, Geom_Hyperbola):
+            if kind == "hyperbola":
                 ra, rb = f(curve.MajorRadius()), f(curve.MinorRadius())
                 return lambda t: [c[k] + ra * mp.cosh(t) * x[k] + rb * mp.sinh(t) * y[k] for k in range(3)]
             foc = f(curve.Focal())
             return lambda t: [c[k] + t * t / (4 * foc) * x[k] + t * y[k] for k in range(3)]
-        if isinstance(curve, Geom_BezierCurve):
+        if kind == "bezier":
             n = curve.NbPoles()
             hom = [[*vec(curve.Pole(i)), f(curve.Weight(i))] for i in range(1, n + 1)]
             hom = [[h[0] * h[3], h[1] * h[3], h[2] * h[3], h[3]] for h in hom]
@@ -174,7 +170,7 @@ class ExactCurve:
                 return [acc[k] / acc[3] for k in range(3)]
 
             return bezier
-        if isinstance(curve, Geom_BSplineCurve):
+        if kind == "bspline":
             bs = curve
             if bs.IsPeriodic():
                 bs = bs.Copy()  # OCP hands back the most derived type
@@ -756,6 +752,10 @@ class Comparison:
     errors : dict
         Exceptions raised by a side (``{"relief_cad": "ValueError: ..."}``); that side's
         answer is then empty and every claim of the other side is arbitrated.
+    skipped : list of (str, int, str)
+        Edges that took no part: ``(shape, index, reason)`` with ``shape`` ``"a"`` or ``"b"``
+        and ``index`` in :func:`~relief_cad.cad.topology.edges_of` order (degenerated edges:
+        a sphere's poles, a cone's apex).
     """
 
     tol: float
@@ -769,6 +769,7 @@ class Comparison:
     edges_a: list[Any] = field(default_factory=list, repr=False)
     edges_b: list[Any] = field(default_factory=list, repr=False)
     plot: bool = False
+    skipped: list[tuple[str, int, str]] = field(default_factory=list)
 
     @property
     def only_relief(self) -> list[Disagreement]:
@@ -919,6 +920,8 @@ class Comparison:
         )
         if self.errors:
             head += "\n" + "\n".join(f"  error in {k}: {v}" for k, v in self.errors.items())
+        if self.skipped:
+            head += "\n" + "\n".join(f"  skipped edge {k}[{i}]: {why}" for k, i, why in self.skipped)
         cols = ("status", "where (edges: params)", "kind", "dist", "dparam", "verdict")
         rows = self._rows()
         if not rows:
@@ -1481,8 +1484,9 @@ def compare(
 
     Parameters
     ----------
-    a : TopoDS_Shape, build123d Shape or CadQuery Shape
-        First shape (its unique edges take part).
+    a : TopoDS_Shape, build123d Shape or CadQuery Shape, or a list of them
+        First shape (its unique edges take part; degenerated edges are skipped and listed
+        in :attr:`Comparison.skipped`).
     b : same types, optional
         Second shape; ``None`` for self-intersections.
     tol : float, optional
@@ -1504,8 +1508,10 @@ def compare(
     Raises
     ------
     ShapeError
-        A shape without edges (errors of either side on usable shapes are recorded in
-        :attr:`Comparison.errors` instead).
+        A shape without edges with a curve, or an edge on an unbounded curve (errors of
+        either side on usable shapes are recorded in :attr:`Comparison.errors` instead).
+    InputTypeError, ToleranceError
+        A ``tol`` that is not a number, or not a finite distance > 0.
 
     Examples
     --------
@@ -1519,14 +1525,15 @@ def compare(
     """
     import mpmath
 
-    edges_a = unique_edges(a)
-    edges_b = edges_a if b is None else unique_edges(b)
-    for name, shape, edges in (("a", a, edges_a), ("b", b, edges_b)):
-        if not edges:
-            kind = type(shape).__name__
-            raise ShapeError(f"expected a shape with edges for {name}, received a {kind} with no edges")
-    if tol is None:
-        tol = default_occt_tolerance(*edges_a, *edges_b)
+    given_tol = None if tol is None else check_tol(tol)
+    edges_a, edges_b = edges_of(a), None if b is None else edges_of(b)
+    usable_a, skipped_a = usable_edges(a, "a")
+    usable_b, skipped_b = (usable_a, []) if b is None else usable_edges(b, "b")
+    skipped = [("a", i, why) for i, why in skipped_a] + [("b", i, why) for i, why in skipped_b]
+    if edges_b is None:
+        edges_b = edges_a
+    tol = default_occt_tolerance(*(e for _, e in usable_a), *(e for _, e in usable_b)) \
+        if given_tol is None else given_tol
     errors: dict[str, str] = {}
     times: dict[str, float] = {}
     t0 = time.perf_counter()
@@ -1547,8 +1554,8 @@ def compare(
     t2 = time.perf_counter()
     times["relief_cad"], times["occt"] = t1 - t0, t2 - t1
     with mpmath.workdps(ARBITER_DIGITS):
-        exacts_a = [ExactCurve(e) for e in edges_a]
-        exacts_b = exacts_a if b is None else [ExactCurve(e) for e in edges_b]
+        exacts_a = _exact_curves(usable_a, len(edges_a))
+        exacts_b = exacts_a if b is None else _exact_curves(usable_b, len(edges_b))
         agreed, dis = _match_side(relief_res, occt_res, exacts_a, exacts_b, float(tol), b is None, refine)
     times["arbiter"] = time.perf_counter() - t2
     routes = list(dict.fromkeys(r.route for r in occt_res))
@@ -1564,4 +1571,13 @@ def compare(
         list(edges_a),
         list(edges_b),
         plot,
+        skipped,
     )
+
+
+def _exact_curves(usable: list[tuple[int, Any]], n: int) -> list[Any]:
+    """Exact curves at the edges' indices (None at skipped, degenerated edges: no result names them)."""
+    out: list[Any] = [None] * n
+    for i, edge in usable:
+        out[i] = ExactCurve(edge)
+    return out

@@ -24,6 +24,7 @@ from OCP.TopoDS import TopoDS_Edge, TopoDS_Vertex
 from relief_cad.cad import api, ocp
 from relief_cad.cad import build123d as rbd
 from relief_cad.cad._compat import Array1OfInteger, Array1OfPnt, Array1OfReal, ListOfShape, downcast_edge
+from relief_cad.cad.compare import compare
 from relief_cad.cad.occt import occt_intersections
 from relief_cad.cad.results import EdgeIntersection, EdgeOverlap
 from relief_cad.errors import InputTypeError, InvalidInputError, ReliefCadError, ToleranceError
@@ -422,10 +423,27 @@ def test_bad_shapes(args, error):
     assert isinstance(info.value, ReliefCadError)
 
 
-@pytest.mark.parametrize("tol", [0.0, -1.0, float("nan"), "x"])
-def test_bad_tolerance(tol):
-    with pytest.raises(ToleranceError):
-        api.intersections(seg(XY, (0, 0), (1, 0)), seg(XY, (0, 1), (1, 0)), tol=tol)
+CAD_FUNCTIONS = {
+    "intersections": api.intersections,
+    "intersect": api.intersect,
+    "split": api.split,
+    "occt_intersections": occt_intersections,
+    "compare": compare,
+}
+
+
+@pytest.mark.parametrize("function", list(CAD_FUNCTIONS))
+@pytest.mark.parametrize("tol", [0.0, -1.0, float("nan"), float("inf"), 10**400])
+def test_bad_tolerance_value(function, tol):
+    with pytest.raises(ToleranceError, match="finite distance > 0"):
+        CAD_FUNCTIONS[function](seg(XY, (0, 0), (1, 0)), seg(XY, (0, 1), (1, 0)), tol=tol)
+
+
+@pytest.mark.parametrize("function", list(CAD_FUNCTIONS))
+@pytest.mark.parametrize("tol", ["abc", [1e-6], True, 1j])
+def test_bad_tolerance_type(function, tol):
+    with pytest.raises(InputTypeError, match=f"not {type(tol).__name__}"):
+        CAD_FUNCTIONS[function](seg(XY, (0, 0), (1, 0)), seg(XY, (0, 1), (1, 0)), tol=tol)
 
 
 # ----------------------------------------------------------------------------- more contacts

@@ -107,7 +107,7 @@ def test_bad_input_is_named():
 
     empty = TopoDS_Compound()
     BRep_Builder().MakeCompound(empty)
-    with pytest.raises(ShapeError, match="no edges"):
+    with pytest.raises(ShapeError, match="at least one edge with a curve"):
         occt_intersections(empty)
 
 
