@@ -28,6 +28,13 @@ MODULES = [
     "relief_cad.cad.build123d",
     pytest.param("relief_cad.cad.cadquery", marks=needs_cadquery),
     "relief_cad.cad._compat",
+    "relief_cad.cad._checks",
+    "relief_cad.cad.topology",
+    "relief_cad.cad.flavour",
+    "relief_cad.cad.curvetypes",
+    "relief_cad.cad.exact",
+    "relief_cad.cad.arbiter",
+    "relief_cad.cad.render",
 ]
 
 
