@@ -1,0 +1,78 @@
+"""Tool versions and the code fingerprint written into every results file.
+
+A results file is only ever extended by a run of the same corpus with the same tools, so
+that two OCCT builds, or two relief_cad revisions, are never mixed in one table. The
+lead will switch :func:`tool_versions` to ``relief_cad.cad._compat.versions()`` once that
+lands (issue 11); this reader only asks the installed distributions.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import importlib.metadata as md
+from pathlib import Path
+
+__all__ = ["tool_versions", "code_fingerprint", "occt_label"]
+
+_DISTS = ("cadquery-ocp", "cadquery-ocp-novtk", "build123d", "cadquery", "relief-cad", "numpy")
+
+
+def _dist_version(name: str) -> str | None:
+    try:
+        return md.version(name)
+    except md.PackageNotFoundError:
+        return None
+
+
+def code_fingerprint() -> str:
+    """SHA-256 (first 16 hex digits) of relief_cad's and the workbench's Python sources.
+
+    It changes whenever the code that produced a result changes, even when the package
+    version number does not.
+
+    >>> len(code_fingerprint())
+    16
+    """
+    import relief_cad
+
+    h = hashlib.sha256()
+    for root in (Path(relief_cad.__file__).parent, Path(__file__).parent):
+        for f in sorted(root.rglob("*.py")):
+            h.update(f.relative_to(root).as_posix().encode())
+            h.update(f.read_bytes())
+    return h.hexdigest()[:16]
+
+
+def tool_versions() -> dict[str, str]:
+    """Versions of OCCT (from the OCP build), OCP, build123d, CadQuery, relief_cad and its code.
+
+    Returns
+    -------
+    dict
+        ``{"occt": "7.9.3", "ocp": "cadquery-ocp 7.9.3.1", "build123d": ..., "cadquery": ...,
+        "relief_cad": "0.1.0", "code": <fingerprint>}``; a tool that is not installed is left out.
+
+    >>> "code" in tool_versions()
+    True
+    """
+    out: dict[str, str] = {}
+    for name in _DISTS:
+        v = _dist_version(name)
+        if v is None:
+            continue
+        if name.startswith("cadquery-ocp"):
+            out["ocp"] = f"{name} {v}"
+            out["occt"] = ".".join(v.split(".")[:3])
+        else:
+            out[name.replace("-", "_")] = v
+    out["code"] = code_fingerprint()
+    return out
+
+
+def occt_label(versions: dict[str, str]) -> str:
+    """A short column label for a results file: ``"OCCT 7.9.3"`` (``"OCCT ?"`` if unknown).
+
+    >>> occt_label({"occt": "8.0.1"})
+    'OCCT 8.0.1'
+    """
+    return f"OCCT {versions.get('occt', '?')}"
