@@ -13,7 +13,15 @@ import time
 from pathlib import Path
 from typing import Any
 
-__all__ = ["main", "build_parser", "EXIT_OK", "EXIT_FAILED", "EXIT_BAD_INPUT", "EXIT_INCOMPLETE", "EXIT_INTERRUPTED"]
+__all__ = [
+    "main",
+    "build_parser",
+    "EXIT_OK",
+    "EXIT_FAILED",
+    "EXIT_BAD_INPUT",
+    "EXIT_INCOMPLETE",
+    "EXIT_INTERRUPTED",
+]
 
 EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT, EXIT_INCOMPLETE, EXIT_INTERRUPTED = 0, 1, 2, 3, 130
 
@@ -43,7 +51,7 @@ def _say(msg: str) -> None:
 
 
 def _cmd_corpus(args: argparse.Namespace) -> int:
-    from .corpus import RANDOM_FAMILIES, CorpusError, Item, build_corpus, bundled_items, write_corpus
+    from .corpus import RANDOM_FAMILIES, CorpusError, build_corpus, bundled_items, write_corpus
 
     fams = args.families.split(",") if args.families else list(RANDOM_FAMILIES) + ["glyph", "sketch", "step"]
     problems: list[str] = []
@@ -61,7 +69,10 @@ def _cmd_corpus(args: argparse.Namespace) -> int:
         n = write_corpus(args.out, items())
     except CorpusError as exc:
         raise _Usage(str(exc)) from None
-    print(f"wrote {n} items ({', '.join(fams)}) to {args.out}" + (f"; {len(problems)} input(s) skipped" if problems else ""))
+    print(
+        f"wrote {n} items ({', '.join(fams)}) to {args.out}"
+        + (f"; {len(problems)} input(s) skipped" if problems else "")
+    )
     if n == 0:
         raise _Usage(f"no items: every input was skipped, {args.out} is empty")
     return EXIT_FAILED if problems else EXIT_OK
@@ -123,7 +134,9 @@ def _corpus_of(args: argparse.Namespace) -> tuple[Path, list[str]]:
             raise _Usage("expected either one corpus file or STEP files/folders, received a mix of both")
         return _step_corpus(steps, Path(args.out), args.count, args.within)
     if len(inputs) > 1:
-        raise _Usage(f"expected one corpus file, received {len(inputs)} (merge them with corpus, or run each)")
+        raise _Usage(
+            f"expected one corpus file, received {len(inputs)} (merge them with corpus, or run each)"
+        )
     return inputs[0], []
 
 
@@ -202,7 +215,9 @@ def _cmd_quickstart(args: argparse.Namespace) -> int:
             _say(f"{str(exc).split('; give')[0]}: running again from scratch")
             fresh = True
     print(f"comparing relief_cad with OCCT on the bundled corpus ({corpus.name}) ...")
-    summary = run_compare(corpus, out, workers=args.workers, progress=not args.quiet, fresh=fresh, info=info, say=_say)
+    summary = run_compare(
+        corpus, out, workers=args.workers, progress=not args.quiet, fresh=fresh, info=info, say=_say
+    )
     code = _finish(summary, [], results, t0)
     path = write_report([out], out, corpus=corpus)
     print(f"\nreport: {path.resolve()}\n(open it in a browser; it is a single self-contained file)")
@@ -225,59 +240,103 @@ def _add_compare(sub: Any) -> None:
         "(across the files; --within for pairs inside each file). Resumes an interrupted run in the "
         "same --out folder; refuses a folder holding another corpus's results unless --fresh.",
     )
-    m.add_argument("inputs", nargs="*", metavar="INPUT",
-                   help="a corpus file (.jsonl / .jsonl.gz), or STEP files/folders (default: the bundled corpus)")
+    m.add_argument(
+        "inputs",
+        nargs="*",
+        metavar="INPUT",
+        help="a corpus file (.jsonl / .jsonl.gz), or STEP files/folders (default: the bundled corpus)",
+    )
     m.add_argument("--out", default="relief_cad_compare", help="output folder (default ./relief_cad_compare)")
     m.add_argument("--fresh", action="store_true", help="discard the results already in --out and start over")
-    m.add_argument("--within", action="store_true",
-                   help="STEP inputs: pair edges within each file instead of across the files")
-    m.add_argument("--count", type=int, default=200, help="STEP inputs: edge pairs to build in all (default 200)")
-    m.add_argument("--workers", type=int, default=None, help="worker processes (default: all cores; 1: in this process)")
-    m.add_argument("--scheduler", default=None, help="Dask scheduler address, e.g. tcp://10.0.0.1:8786 (instead of local processes)")
+    m.add_argument(
+        "--within",
+        action="store_true",
+        help="STEP inputs: pair edges within each file instead of across the files",
+    )
+    m.add_argument(
+        "--count", type=int, default=200, help="STEP inputs: edge pairs to build in all (default 200)"
+    )
+    m.add_argument(
+        "--workers", type=int, default=None, help="worker processes (default: all cores; 1: in this process)"
+    )
+    m.add_argument(
+        "--scheduler",
+        default=None,
+        help="Dask scheduler address, e.g. tcp://10.0.0.1:8786 (instead of local processes)",
+    )
     m.add_argument("--limit", type=int, default=None, help="only the first N items of the corpus")
     m.add_argument("--quiet", action="store_true", help="no progress bar")
-    m.add_argument("--stop-after", type=int, default=None, metavar="N",
-                   help="stop after N new results, as an interruption would (exit status 3; for testing resume)")
+    m.add_argument(
+        "--stop-after",
+        type=int,
+        default=None,
+        metavar="N",
+        help="stop after N new results, as an interruption would (exit status 3; for testing resume)",
+    )
     m.set_defaults(func=_cmd_compare)
 
 
 def _add_corpus(sub: Any) -> None:
-    c = sub.add_parser("corpus", help="build a corpus file",
-                       description="Build a corpus file of edge pairs (JSON lines of OCCT BREP text).")
+    c = sub.add_parser(
+        "corpus",
+        help="build a corpus file",
+        description="Build a corpus file of edge pairs (JSON lines of OCCT BREP text).",
+    )
     c.add_argument("out", help="output file (.jsonl or .jsonl.gz)")
-    c.add_argument("--families", default="", help="comma-separated families (default: all); random: cubic, "
-                   "rational, high-degree, ill-conditioned, tangent, overlap, shared-end, near-miss, scaled, "
-                   "space; CAD: glyph, sketch, step")
+    c.add_argument(
+        "--families",
+        default="",
+        help="comma-separated families (default: all); random: cubic, "
+        "rational, high-degree, ill-conditioned, tangent, overlap, shared-end, near-miss, scaled, "
+        "space; CAD: glyph, sketch, step",
+    )
     c.add_argument("--count", type=int, default=20, help="items per family (default 20)")
     c.add_argument("--seed", type=int, default=0, help="seed of the random families (default 0)")
-    c.add_argument("--step", action="append",
-                   help="a STEP file or folder for the 'step' family (repeatable; default: the bundled parts)")
-    c.add_argument("--bundled", action="store_true", help="write the bundled corpus's recipe (ignores the other "
-                   "options; this is how workbench/data/bundled.jsonl.gz is made)")
+    c.add_argument(
+        "--step",
+        action="append",
+        help="a STEP file or folder for the 'step' family (repeatable; default: the bundled parts)",
+    )
+    c.add_argument(
+        "--bundled",
+        action="store_true",
+        help="write the bundled corpus's recipe (ignores the other "
+        "options; this is how workbench/data/bundled.jsonl.gz is made)",
+    )
     c.set_defaults(func=_cmd_corpus)
 
 
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of the workbench command line."""
-    p = argparse.ArgumentParser(prog=_prog(), description=DESCRIPTION, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p = argparse.ArgumentParser(
+        prog=_prog(), description=DESCRIPTION, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
     _add_corpus(sub)
     _add_compare(sub)
-    r = sub.add_parser("report", help="HTML report of one or several compare runs",
-                       description="Write a self-contained HTML report. Several results (one compare run "
-                       "per OCCT version on the same corpus) get one column per version.")
+    r = sub.add_parser(
+        "report",
+        help="HTML report of one or several compare runs",
+        description="Write a self-contained HTML report. Several results (one compare run "
+        "per OCCT version on the same corpus) get one column per version.",
+    )
     r.add_argument("results", nargs="+", help="compare output folder(s) or their results.jsonl")
     r.add_argument("--out", default=None, help="output folder (default: next to the first results)")
-    r.add_argument("--corpus", default=None, help="the corpus, for the pictures (default: as recorded by compare)")
+    r.add_argument(
+        "--corpus", default=None, help="the corpus, for the pictures (default: as recorded by compare)"
+    )
     r.add_argument("--max-pictures", type=int, default=200, help="at most this many pictures (default 200)")
     r.set_defaults(func=_cmd_report)
     b = sub.add_parser("bench", help="benchmarks: planar, cad, space (default all)")
     b.add_argument("names", nargs="*", help="planar, cad, space or all")
     b.add_argument("--json", default="bench.json", help="write results here (default bench.json)")
     b.set_defaults(func=_cmd_bench)
-    q = sub.add_parser("quickstart", help="compare + report on the bundled corpus",
-                       description="Compare + report on the bundled corpus. Reuses the results in --out when "
-                       "they were made by the same code and tools, and says so; reruns them otherwise.")
+    q = sub.add_parser(
+        "quickstart",
+        help="compare + report on the bundled corpus",
+        description="Compare + report on the bundled corpus. Reuses the results in --out when "
+        "they were made by the same code and tools, and says so; reruns them otherwise.",
+    )
     q.add_argument("--out", default="relief_cad_report", help="output folder (default ./relief_cad_report)")
     q.add_argument("--workers", type=int, default=None, help="worker processes (default: all cores)")
     q.add_argument("--fresh", action="store_true", help="recompute even when the results could be reused")

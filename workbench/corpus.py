@@ -186,7 +186,9 @@ def read_shape(text: str) -> Any:
     try:
         BRepTools.Read_s(shape, io.BytesIO(text.encode("ascii")), BRep_Builder())
     except UnicodeEncodeError as exc:
-        raise CorpusError(f"unreadable BREP text: expected ASCII, received {exc.object[exc.start:exc.end]!r}")
+        raise CorpusError(
+            f"unreadable BREP text: expected ASCII, received {exc.object[exc.start : exc.end]!r}"
+        ) from None
     except Exception as exc:  # noqa: BLE001
         raise CorpusError(f"unreadable BREP text: {exc}") from exc
     if shape.IsNull():
@@ -242,7 +244,7 @@ def _parse_line(raw: bytes, lineno: int, name: str) -> Item | CorpusError:
             d.get("meta") or {},
         )
     except UnicodeDecodeError as exc:
-        reason: Exception = ValueError(f"not UTF-8 text: byte {raw[exc.start:exc.start + 1]!r}")
+        reason: Exception = ValueError(f"not UTF-8 text: byte {raw[exc.start : exc.start + 1]!r}")
     except (ValueError, TypeError, KeyError) as exc:
         reason = exc
     err = CorpusError(f"{name} line {lineno}: corrupt corpus line ({reason})")
@@ -266,7 +268,9 @@ def read_corpus(path: str | os.PathLike[str]) -> Iterator[Item | CorpusError]:
                 continue
             it = _parse_line(raw, lineno, p.name)
             if isinstance(it, Item) and it.id in seen:
-                err = CorpusError(f"{p.name} line {lineno}: duplicate id {it.id!r} (first on line {seen[it.id]})")
+                err = CorpusError(
+                    f"{p.name} line {lineno}: duplicate id {it.id!r} (first on line {seen[it.id]})"
+                )
                 err.id = f"{it.id}@line-{lineno}"  # type: ignore[attr-defined]
                 it = err
             elif isinstance(it, Item):
@@ -671,7 +675,9 @@ def read_step(path: str | os.PathLike[str]) -> Any:
 
     p = Path(path)
     if not p.is_file():
-        raise CorpusError(f"{p}: no such file" if not p.exists() else f"{p}: expected a STEP file, received a folder")
+        raise CorpusError(
+            f"{p}: no such file" if not p.exists() else f"{p}: expected a STEP file, received a folder"
+        )
     reader = STEPControl_Reader()
     with _quiet_fds() as tmp:
         try:
@@ -773,7 +779,9 @@ def step_family(
             seen.add(key)
             if got_n >= per or k >= count:
                 break
-            yield Item(f"step-{name}-{got_n:06d}", "step", pair_text(a, b), PAIR_MARK, None, {"file": file_meta})
+            yield Item(
+                f"step-{name}-{got_n:06d}", "step", pair_text(a, b), PAIR_MARK, None, {"file": file_meta}
+            )
             got_n += 1
             k += 1
 

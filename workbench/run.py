@@ -191,8 +191,11 @@ def _mismatch(path: Path, head: dict[str, Any] | None, info: CorpusInfo, version
             f"{str(head.get('sha256'))[:12]}), not of {info.path} (sha256 {info.sha256[:12]})"
         )
     old = head.get("versions", {})
-    diff = [f"{k} {old.get(k, '-')} -> {versions.get(k, '-')}" for k in sorted(set(old) | set(versions))
-            if old.get(k) != versions.get(k)]
+    diff = [
+        f"{k} {old.get(k, '-')} -> {versions.get(k, '-')}"
+        for k in sorted(set(old) | set(versions))
+        if old.get(k) != versions.get(k)
+    ]
     return f"{path} was made with other tool versions ({'; '.join(diff)})" if diff else ""
 
 
@@ -361,8 +364,15 @@ def run_compare(
     if already and say is not None:
         say(f"resuming: {already} of {len(expected)} items already done in {results_path}")
     stopped = interrupted = False
-    bar = tqdm(total=len(expected), initial=already, desc="compare", unit="pair", disable=not progress,
-               file=sys.stderr, dynamic_ncols=True)
+    bar = tqdm(
+        total=len(expected),
+        initial=already,
+        desc="compare",
+        unit="pair",
+        disable=not progress,
+        file=sys.stderr,
+        dynamic_ncols=True,
+    )
     old_term = signal.signal(signal.SIGTERM, _raise_interrupt) if _main_thread() else None
     try:
         with open(results_path, "a", encoding="utf-8") as sink:
@@ -382,8 +392,14 @@ def run_compare(
     results = load_results(results_path)
     summary = summarize(results)
     have = {r.get("id") for r in results}
-    summary.update(complete=not (stopped or interrupted) and set(expected) <= have, interrupted=interrupted,
-                   resumed=already, expected=len(expected), corpus=str(corpus), versions=versions)
+    summary.update(
+        complete=not (stopped or interrupted) and set(expected) <= have,
+        interrupted=interrupted,
+        resumed=already,
+        expected=len(expected),
+        corpus=str(corpus),
+        versions=versions,
+    )
     (outdir / "summary.json").write_text(json.dumps(summary, indent=1, default=float))
     return summary
 
@@ -457,7 +473,9 @@ def speed_ratio(relief_s: float, occt_s: float) -> float:
     return relief_s / occt_s if occt_s > 0 else float("nan")
 
 
-RATIO_NOTE = "ratio = relief_cad time / OCCT time on the same pairs in the same run; below 1 = relief_cad faster"
+RATIO_NOTE = (
+    "ratio = relief_cad time / OCCT time on the same pairs in the same run; below 1 = relief_cad faster"
+)
 
 
 def summarize(results: list[dict[str, Any]]) -> dict[str, Any]:
