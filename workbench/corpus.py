@@ -328,12 +328,11 @@ def check_corpus(path: str | os.PathLike[str]) -> CorpusInfo:
 
 
 def _not_a_corpus_reason(p: Path) -> str:
-    head = next(_raw_lines(p), b"")
+    head = b"".join(line for _, line in zip(range(64), _raw_lines(p), strict=False))[:8192]
     if head.startswith(b"ISO-10303-21"):
         return "a STEP file, not a corpus (give it to compare directly, or to corpus --step)"
-    try:
-        head.decode("utf-8")
-    except UnicodeDecodeError:
+    text = head.decode("utf-8", "replace")[:-3]  # the cut may split a character
+    if "\x00" in text or "\ufffd" in text:
         return "not a corpus: binary data, not UTF-8 JSON lines"
     return "not a corpus: no line is a JSON object with BREP text in 'a'"
 

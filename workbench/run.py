@@ -239,6 +239,7 @@ class InlineExecutor(Executor):
 
 def _ignore_sigint() -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent alone handles Ctrl-C
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)  # and terminates its workers quietly
 
 
 def _executor(workers: int | None, scheduler: Any) -> tuple[Executor, int, Any]:

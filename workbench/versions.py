@@ -25,10 +25,10 @@ def _dist_version(name: str) -> str | None:
 
 
 def code_fingerprint() -> str:
-    """SHA-256 (first 16 hex digits) of relief_cad's and the workbench's Python sources.
+    """SHA-256 (first 16 hex digits) of relief_cad's Python sources and the workbench's runner.
 
-    It changes whenever the code that produced a result changes, even when the package
-    version number does not.
+    It changes whenever the code that produces a result changes, even when the package
+    version number does not (the report's own code is left out: it only reads results).
 
     >>> len(code_fingerprint())
     16
@@ -36,10 +36,11 @@ def code_fingerprint() -> str:
     import relief_cad
 
     h = hashlib.sha256()
-    for root in (Path(relief_cad.__file__).parent, Path(__file__).parent):
-        for f in sorted(root.rglob("*.py")):
-            h.update(f.relative_to(root).as_posix().encode())
-            h.update(f.read_bytes())
+    root = Path(relief_cad.__file__).parent
+    files = [*sorted(root.rglob("*.py")), *sorted(root.rglob("*.pyx")), Path(__file__).with_name("run.py")]
+    for f in files:
+        h.update(f.name.encode())
+        h.update(f.read_bytes())
     return h.hexdigest()[:16]
 
 
@@ -65,6 +66,10 @@ def tool_versions() -> dict[str, str]:
             out["occt"] = ".".join(v.split(".")[:3])
         else:
             out[name.replace("-", "_")] = v
+    if "relief_cad" not in out:  # run from a source checkout
+        import relief_cad
+
+        out["relief_cad"] = str(getattr(relief_cad, "__version__", "source"))
     out["code"] = code_fingerprint()
     return out
 
