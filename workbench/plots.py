@@ -104,7 +104,7 @@ def _draw_answers(ax: Any, proj: _Projector, edges_a: Sequence[Any], rec: dict[s
         st = _STYLE[side]
         for r in rec.get(side, []):
             if r.get("type") == "overlap" and r["index_a"] < len(edges_a):
-                q = proj(edge_points(edges_a[r["index_a"]], *r["t"], n=60))
+                q = proj(edge_points(edges_a[r["index_a"]], float(r["t"][0]), float(r["t"][1]), n=60))
                 ax.plot(q[:, 0], q[:, 1], color=st["color"], lw=st["lw"], alpha=0.5, zorder=3)
             elif "point" in r:
                 q = proj(r["point"])

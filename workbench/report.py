@@ -15,6 +15,7 @@ import base64
 import datetime as _dt
 import math
 import statistics
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -51,9 +52,10 @@ GLOSSARY = {
     "BRepAlgoAPI_Section (fallback); (none) means OCCT reported nothing, so no route was recorded",
     "finding": "one kind of mistake by one side in one pair; repeated copies of one point are one "
     "finding with a count",
-    "missed / spurious / duplicate copies / misplaced / tangency as a segment / overlap in pieces": "the kinds of mistake: a true point not reported; a point that is not there; the same point "
-    "reported again; a point reported off its true place; a tangent point reported as an overlap "
-    "segment; an overlap reported as points or as part of its range",
+    "kinds of mistake": "missed: a true point not reported; spurious: a point that is not there; "
+    "duplicate copies: the same point reported again; misplaced: a point reported off its true place; "
+    "tangency as a segment: a tangent point reported as an overlap; overlap in pieces: an overlap "
+    "reported as points or as part of its range; both wrong: the arbiter agrees with neither side",
 }
 
 
@@ -209,7 +211,7 @@ def _versions_side_by_side(runs: list[Run]) -> list[dict[str, Any]]:
 
 
 def _cards(run: Run, items: dict[str, Item], max_pictures: int) -> list[dict[str, Any]]:
-    cards = []
+    cards: list[dict[str, Any]] = []
     for r in [x for x in run.recs if x.get("status") == "ok" and x.get("disagreements")]:
         pic = _picture(items.get(r["id"]), r) if len(cards) < max_pictures else None
         cards.append({"rec": r, "findings": findings(r), "pic": pic, "b64": _b64(pic), "run": run.label})
@@ -269,7 +271,7 @@ def _histograms(run: Run) -> tuple[Picture, Picture]:
 
 
 def write_report(
-    results: str | Path | list[str | Path],
+    results: str | Path | Sequence[str | Path],
     out: str | Path,
     *,
     corpus: str | Path | None = None,
@@ -301,7 +303,7 @@ def write_report(
     """
     import jinja2
 
-    runs = [load_run(p) for p in (results if isinstance(results, list) else [results])]
+    runs = [load_run(p) for p in ([results] if isinstance(results, (str, Path)) else results)]
     corpus = corpus or runs[0].header.get("corpus")
     need = {r["id"] for run in runs for r in run.recs if r.get("disagreements")}
     items = _items(corpus, need)

@@ -1,9 +1,9 @@
 """Tool versions and the code fingerprint written into every results file.
 
 A results file is only ever extended by a run of the same corpus with the same tools, so
-that two OCCT builds, or two relief_cad revisions, are never mixed in one table. The
-lead will switch :func:`tool_versions` to ``relief_cad.cad._compat.versions()`` once that
-lands (issue 11); this reader only asks the installed distributions.
+that two OCCT builds, or two relief_cad revisions, are never mixed in one table.
+:func:`tool_versions` takes the CAD stack's versions from ``relief_cad.cad._compat.versions()``
+(issue 11) when that module is there, and otherwise asks the installed distributions.
 """
 
 from __future__ import annotations
@@ -57,6 +57,22 @@ def tool_versions() -> dict[str, str]:
     True
     """
     out: dict[str, str] = {}
+    try:
+        from relief_cad.cad._compat import versions  # type: ignore[import-not-found, unused-ignore]
+
+        out = {k: str(v) for k, v in versions().items() if v is not None}
+    except ImportError:  # before issue 11's compatibility module: read the distributions
+        out = _from_distributions()
+    if "relief_cad" not in out:  # run from a source checkout
+        import relief_cad
+
+        out["relief_cad"] = str(getattr(relief_cad, "__version__", "source"))
+    out["code"] = code_fingerprint()
+    return out
+
+
+def _from_distributions() -> dict[str, str]:
+    out: dict[str, str] = {}
     for name in _DISTS:
         v = _dist_version(name)
         if v is None:
@@ -66,11 +82,6 @@ def tool_versions() -> dict[str, str]:
             out["occt"] = ".".join(v.split(".")[:3])
         else:
             out[name.replace("-", "_")] = v
-    if "relief_cad" not in out:  # run from a source checkout
-        import relief_cad
-
-        out["relief_cad"] = str(getattr(relief_cad, "__version__", "source"))
-    out["code"] = code_fingerprint()
     return out
 
 
