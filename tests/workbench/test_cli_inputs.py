@@ -206,3 +206,22 @@ def test_help_names_the_program_is_plain_and_covers_every_option():
     assert "``" not in top and ":func:" not in top and "exit status" in top
     missing = [f"{prog} {a.option_strings or a.dest}" for prog, a in _actions(build_parser()) if not a.help]
     assert not missing
+
+
+def test_quickstart_reuses_its_results_and_reruns_when_the_code_changed(tmp_path):
+    out = tmp_path / "qs"
+    first = cli("quickstart", "--out", out, "--workers", "2", "--quiet")
+    assert first.returncode == 0 and (out / "report.html").exists(), first.stdout + first.stderr
+    again = cli("quickstart", "--out", out, "--workers", "2", "--quiet")
+    assert again.returncode == 0 and "reusing the results in" in again.stderr
+    assert "resuming: 122 of 122 items already done" in again.stderr
+    # results made by another version of the code: quickstart says so and computes them again
+    path = out / "results.jsonl"
+    lines = path.read_text().splitlines(keepends=True)
+    head = json.loads(lines[0])
+    head["relief_cad_results"]["versions"]["code"] = "0123456789abcdef"
+    path.write_text(json.dumps(head) + "\n" + "".join(lines[1:]))
+    rerun = cli("quickstart", "--out", out, "--workers", "2", "--quiet")
+    assert rerun.returncode == 0 and "running again from scratch" in rerun.stderr
+    assert "code 0123456789abcdef ->" in rerun.stderr and "resuming" not in rerun.stderr
+    assert read_header(path)["versions"]["code"] != "0123456789abcdef"

@@ -11,7 +11,6 @@ import time
 from pathlib import Path
 
 import pytest
-
 from relief_cad_workbench.__main__ import EXIT_INTERRUPTED, EXIT_OK
 from relief_cad_workbench.corpus import Item, random_family, read_corpus, write_corpus
 
