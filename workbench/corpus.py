@@ -786,7 +786,7 @@ def step_family(
 
 
 BUNDLED_RECIPE = {"random_count": 8, "cad_count": 14, "seed": 7}
-"""How ``workbench/data/bundled.jsonl.gz`` is made (``python -m workbench corpus --bundled OUT``)."""
+"""How ``workbench/data/bundled.jsonl.gz`` is made (``relief-cad-workbench corpus --bundled OUT``)."""
 
 
 def bundled_items() -> Iterator[Item | CorpusError]:
