@@ -92,12 +92,8 @@ def _arc(cx: float, cy: float, r: float, a0: float, a1: float) -> RationalBezier
 def cases() -> dict[str, list[tuple[RationalBezier, RationalBezier]]]:
     """The benchmark cases: name -> list of pairs."""
     out: dict[str, list[tuple[RationalBezier, RationalBezier]]] = {}
-    out["cubic x1"] = [
-        (
-            RationalBezier([[0, 0], [1, 2], [2, 2], [3, 0]]),
-            RationalBezier([[1.5, -0.5], [1.2, 0.5], [1.8, 1.5], [1.5, 2.5]]),
-        )
-    ]
+    out["cubic x1"] = [(RationalBezier([[0, 0], [1, 2], [2, 2], [3, 0]]),
+                        RationalBezier([[1.5, -0.5], [1.2, 0.5], [1.8, 1.5], [1.5, 2.5]]))]
     # y = f(x) against x = f(y), f(x) = 1/2 + 25 (x - 0.15)(x - 0.5)(x - 0.85): nine crossings
     f9 = [-1.09375, 4.135416666666667, -3.1354166666666665, 2.09375]
     x3 = [0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0]
@@ -106,9 +102,8 @@ def cases() -> dict[str, list[tuple[RationalBezier, RationalBezier]]]:
     # graph of T_7(2x - 1) (Bernstein ordinates) against a straight degree-7 curve: seven crossings
     t7 = [-1.0, 13.0, -47.666666666666664, 85.8, -85.8, 47.666666666666664, -13.0, 1.0]
     xs = np.linspace(0, 1, 8)
-    out["degree 7 x7"] = [
-        (RationalBezier(np.column_stack([xs, t7])), RationalBezier(np.column_stack([xs, 0.05 + 0.1 * xs])))
-    ]
+    out["degree 7 x7"] = [(RationalBezier(np.column_stack([xs, t7])),
+                           RationalBezier(np.column_stack([xs, 0.05 + 0.1 * xs])))]
     out["disjoint, boxes overlap"] = [
         (
             RationalBezier([[0, 0], [1, 2], [2, 2], [3, 0]]),
@@ -179,11 +174,8 @@ def run(repeat: int = 5) -> dict[str, Any]:
     wts = np.ones(pts.shape[0])
     intersect_packed(pts, wts, offsets, idx[:10])
     t_packed = _time(lambda: intersect_packed(pts, wts, offsets, idx), max(1, repeat // 2))
-    out: dict[str, Any] = {
-        "cases": rows,
-        "batch_pairs_per_s": len(batch) / t_batch,
-        "packed_pairs_per_s": len(batch) / t_packed,
-    }
+    out: dict[str, Any] = {"cases": rows, "batch_pairs_per_s": len(batch) / t_batch,
+                           "packed_pairs_per_s": len(batch) / t_packed}
     out.update(_startup())
     return out
 
@@ -198,10 +190,8 @@ def _main() -> None:
             f"{row['case']:28s} {row['pairs']:6d} {row['us_relief']:10.2f} {row['us_occt']:10.2f} "
             f"{row['ratio']:7.3f} {row['points_relief']:>6d}/{row['points_occt']:<6d}"
         )
-    print(
-        f"batch of 10,000 random cubic pairs: {r['batch_pairs_per_s']:,.0f} pairs/s (intersect_many), "
-        f"{r['packed_pairs_per_s']:,.0f} pairs/s (clipping.intersect_packed, raw rows)"
-    )
+    print(f"batch of 10,000 random cubic pairs: {r['batch_pairs_per_s']:,.0f} pairs/s (intersect_many), "
+          f"{r['packed_pairs_per_s']:,.0f} pairs/s (clipping.intersect_packed, raw rows)")
     print(f"import: {r['import_s'] * 1e3:.0f} ms, first call (warm cache): {r['first_call_s'] * 1e3:.0f} ms")
 
 

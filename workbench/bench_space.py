@@ -154,7 +154,6 @@ def run(min_seconds: float = 0.3) -> dict[str, Any]:
     rows = []
     for name, pairs in cases().items():
         occ = [(occt_curve(a), occt_curve(b), occt_edge(a), occt_edge(b)) for a, b in pairs]
-
         def ours(pairs: list[tuple[RationalBezier, RationalBezier]] = pairs) -> int:
             return sum(len(intersect(a, b)) for a, b in pairs)
 
@@ -167,17 +166,15 @@ def run(min_seconds: float = 0.3) -> dict[str, Any]:
         t_ours = _time(ours, len(pairs), min_seconds)
         t_ee = _time(edge_edge, len(pairs), min_seconds)
         t_ex = _time(extrema, len(pairs), min_seconds)
-        rows.append(
-            {
-                "case": name,
-                "pairs": len(pairs),
-                "relief_us": t_ours,
-                "edge_edge_us": t_ee,
-                "extrema_us": t_ex,
-                "ratio": t_ours / min(t_ee, t_ex),
-                "found": {"relief_cad": ours(), "IntTools_EdgeEdge": edge_edge(), "extrema<=tol": extrema()},
-            }
-        )
+        rows.append({
+            "case": name,
+            "pairs": len(pairs),
+            "relief_us": t_ours,
+            "edge_edge_us": t_ee,
+            "extrema_us": t_ex,
+            "ratio": t_ours / min(t_ee, t_ex),
+            "found": {"relief_cad": ours(), "IntTools_EdgeEdge": edge_edge(), "extrema<=tol": extrema()},
+        })
     return {"benchmark": "space", "unit": "microseconds per pair", "rows": rows, "target_ratio": 0.05}
 
 
