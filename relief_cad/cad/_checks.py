@@ -1,11 +1,10 @@
-"""Input checks of the CAD layer that the core's checks do not cover yet.
+"""Input checks of the CAD layer: the core's checks (:mod:`relief_cad._checks`), one rule everywhere.
 
-``check_tol`` follows the core's rule (``relief_cad._checks.check_tol``, being written in
-parallel): a tolerance that is not a real number (``str``, a list, ``bool``, ``complex``)
-is an :class:`~relief_cad.errors.InputTypeError`; a real number that is not a finite
-distance > 0 (including integers too large for a float) is a
-:class:`~relief_cad.errors.ToleranceError`. When the core's function lands, this one
-becomes a re-export of it.
+A tolerance that is not a real number (``str``, a list, ``bool``, ``complex``) is a
+:class:`~relief_cad.errors.ToleranceTypeError` (both a ``ToleranceError`` and an
+``InputTypeError``); a real number that is not a finite distance > 0 (including integers
+too large for a float) is a :class:`~relief_cad.errors.ToleranceError`, exactly as in
+:func:`relief_cad.intersect`.
 
 >>> check_tol(1e-6)
 1e-06
@@ -13,21 +12,19 @@ becomes a re-export of it.
 
 from __future__ import annotations
 
-import math
-import numbers
 from typing import Any
 
-from ..errors import InputTypeError, ToleranceError
+from .._checks import check_tol as _core_check_tol
 
 __all__ = ["check_tol"]
 
 
 def check_tol(tol: Any, name: str = "tol") -> float:
-    """Return ``tol`` as a float distance in model units.
+    """Return a given ``tol`` (not None) as a float distance in model units.
 
     Raises
     ------
-    InputTypeError
+    ToleranceTypeError
         If ``tol`` is not a real number (``bool``, ``str``, a list, ``complex``...).
     ToleranceError
         If ``tol`` is not finite and > 0 (``0``, ``-1``, ``nan``, ``inf``, ``10**400``).
@@ -37,23 +34,19 @@ def check_tol(tol: Any, name: str = "tol") -> float:
     >>> check_tol("abc")
     Traceback (most recent call last):
     ...
-    relief_cad.errors.InputTypeError: tol should be a distance > 0 in model units (a float), not str
+    relief_cad.errors.ToleranceTypeError: tol should be a distance > 0 in model units (a float), not str
     >>> check_tol(10**400)
     Traceback (most recent call last):
     ...
     relief_cad.errors.ToleranceError: tol should be a finite distance > 0 in model units, not an integer ...
     """
-    if isinstance(tol, bool) or not isinstance(tol, numbers.Real):
-        raise InputTypeError(
-            f"{name} should be a distance > 0 in model units (a float), not {type(tol).__name__}"
-        )
-    try:
-        value = float(tol)
-    except OverflowError as exc:
-        raise ToleranceError(
-            f"{name} should be a finite distance > 0 in model units, "
-            f"not an integer of {len(str(abs(int(tol))))} digits"  # type: ignore[call-overload]
-        ) from exc
-    if not (math.isfinite(value) and value > 0.0):
-        raise ToleranceError(f"{name} should be a finite distance > 0 in model units, not {value!r}")
+    value = _core_check_tol(tol, name)
+    if value is None:
+        raise _not_none(name)
     return value
+
+
+def _not_none(name: str) -> Exception:
+    from ..errors import ToleranceTypeError
+
+    return ToleranceTypeError(f"{name} should be a distance > 0 in model units (a float), not NoneType")
