@@ -1,4 +1,4 @@
-"""Shared pytest configuration: hypothesis profiles."""
+"""Shared pytest configuration: hypothesis profiles (deselection by environment: ../conftest.py)."""
 
 from __future__ import annotations
 

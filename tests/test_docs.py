@@ -7,6 +7,8 @@ import inspect
 
 import pytest
 
+from tests._env import needs_cadquery
+
 MODULES = [
     "relief_cad",
     "relief_cad.curves",
@@ -24,7 +26,15 @@ MODULES = [
     "relief_cad.cad.compare",
     "relief_cad.cad.occt",
     "relief_cad.cad.build123d",
-    "relief_cad.cad.cadquery",
+    pytest.param("relief_cad.cad.cadquery", marks=needs_cadquery),
+    "relief_cad.cad._compat",
+    "relief_cad.cad._checks",
+    "relief_cad.cad.topology",
+    "relief_cad.cad.flavour",
+    "relief_cad.cad.curvetypes",
+    "relief_cad.cad.exact",
+    "relief_cad.cad.arbiter",
+    "relief_cad.cad.render",
 ]
 
 

@@ -20,6 +20,8 @@ from types import ModuleType
 import numpy as np
 import pytest
 
+from tests._env import needs_cadquery
+
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 SCRIPTS = sorted(p.name for p in EXAMPLES.glob("*.py"))
 CHECKED = {"build123d_sketch.py", "paper_figure.py", "step_intersections.py"}
@@ -418,6 +420,7 @@ def _check_notebook_outputs(nb) -> None:
         assert min(abs(t - r) for r in roots_t) < 1e-8
 
 
+@needs_cadquery
 def test_cadquery_notebook_saved_with_outputs() -> None:
     import nbformat
 
@@ -427,6 +430,7 @@ def test_cadquery_notebook_saved_with_outputs() -> None:
     _check_notebook_outputs(nb)
 
 
+@needs_cadquery
 def test_cadquery_notebook_executes(tmp_path: Path) -> None:
     import nbformat
     from nbclient import NotebookClient

@@ -14,7 +14,7 @@ def run(*args: str) -> subprocess.CompletedProcess[str]:
 
 
 def test_ruff_clean() -> None:
-    result = run("ruff", "check", "relief_cad", "workbench", "tests", "examples")
+    result = run("ruff", "check", "relief_cad", "workbench", "tests", "examples", "conftest.py", "noxfile.py")
     assert result.returncode == 0, result.stdout + result.stderr
 
 

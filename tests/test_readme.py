@@ -9,6 +9,8 @@ from pathlib import Path
 
 import pytest
 
+from tests._env import needs_cadquery
+
 ROOT = Path(__file__).resolve().parents[1]
 BLOCK = re.compile(r"```(python)?\n(.*?)```", re.S)
 
@@ -24,7 +26,15 @@ def snippets() -> list[tuple[str, str | None]]:
     return out
 
 
-@pytest.mark.parametrize("index", range(len(snippets())))
+def _params() -> list[object]:
+    """One param per snippet; the CadQuery ones carry the ``cadquery`` marker (environment B only)."""
+    return [
+        pytest.param(i, marks=[needs_cadquery] if re.search(r"^import cadquery", code, re.M) else [])
+        for i, (code, _) in enumerate(snippets())
+    ]
+
+
+@pytest.mark.parametrize("index", _params())
 def test_readme_snippet(index: int) -> None:
     code, expected = snippets()[index]
     result = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=600,

@@ -97,16 +97,16 @@ def conversion_edges() -> dict[str, Any]:
     from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
     from OCP.Geom import Geom_BSplineCurve
     from OCP.gp import gp_Pnt
-    from OCP.TColgp import TColgp_Array1OfPnt
-    from OCP.TColStd import TColStd_Array1OfInteger, TColStd_Array1OfReal
 
-    poles = TColgp_Array1OfPnt(1, 4)
+    from relief_cad.cad._compat import Array1OfInteger, Array1OfPnt, Array1OfReal
+
+    poles = Array1OfPnt(1, 4)
     for i, (x, y) in enumerate([(0, 0), (1, 2), (3, 1), (4, 0)]):
         poles.SetValue(i + 1, gp_Pnt(x, y, 0))
-    knots = TColStd_Array1OfReal(1, 2)
+    knots = Array1OfReal(1, 2)
     knots.SetValue(1, 0.0)
     knots.SetValue(2, 1.0)
-    mults = TColStd_Array1OfInteger(1, 2)
+    mults = Array1OfInteger(1, 2)
     mults.SetValue(1, 4)
     mults.SetValue(2, 4)
     cubic_bspline = bd.Edge(BRepBuilderAPI_MakeEdge(Geom_BSplineCurve(poles, knots, mults, 3)).Edge())

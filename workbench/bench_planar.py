@@ -34,17 +34,17 @@ def occt_curve(c: RationalBezier) -> Any:
     from OCP.Geom2d import Geom2d_BezierCurve
     from OCP.Geom2dAdaptor import Geom2dAdaptor_Curve
     from OCP.gp import gp_Pnt2d
-    from OCP.TColgp import TColgp_Array1OfPnt2d
-    from OCP.TColStd import TColStd_Array1OfReal
+
+    from relief_cad.cad._compat import Array1OfPnt2d, Array1OfReal
 
     pts = c.control_points
-    poles = TColgp_Array1OfPnt2d(1, pts.shape[0])
+    poles = Array1OfPnt2d(1, pts.shape[0])
     for i, (x, y) in enumerate(pts.tolist()):
         poles.SetValue(i + 1, gp_Pnt2d(x, y))
     if c.is_polynomial:
         geom = Geom2d_BezierCurve(poles)
     else:
-        w = TColStd_Array1OfReal(1, pts.shape[0])
+        w = Array1OfReal(1, pts.shape[0])
         for i, wi in enumerate(c.weights.tolist()):
             w.SetValue(i + 1, wi)
         geom = Geom2d_BezierCurve(poles, w)

@@ -32,16 +32,16 @@ def occt_curve(c: RationalBezier) -> Any:
     """The OCCT ``Geom_BezierCurve`` of a space :class:`RationalBezier`."""
     from OCP.Geom import Geom_BezierCurve
     from OCP.gp import gp_Pnt
-    from OCP.TColgp import TColgp_Array1OfPnt
-    from OCP.TColStd import TColStd_Array1OfReal
+
+    from relief_cad.cad._compat import Array1OfPnt, Array1OfReal
 
     pts = c.embedded(3).control_points
-    poles = TColgp_Array1OfPnt(1, pts.shape[0])
+    poles = Array1OfPnt(1, pts.shape[0])
     for i, (x, y, z) in enumerate(pts.tolist()):
         poles.SetValue(i + 1, gp_Pnt(x, y, z))
     if c.is_polynomial:
         return Geom_BezierCurve(poles)
-    w = TColStd_Array1OfReal(1, pts.shape[0])
+    w = Array1OfReal(1, pts.shape[0])
     for i, wi in enumerate(c.weights.tolist()):
         w.SetValue(i + 1, wi)
     return Geom_BezierCurve(poles, w)

@@ -344,19 +344,19 @@ def _bezier_edge(points: np.ndarray, weights: np.ndarray | None = None) -> Any:
     from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
     from OCP.Geom import Geom_BezierCurve
     from OCP.gp import gp_Pnt
-    from OCP.TColgp import TColgp_Array1OfPnt
-    from OCP.TColStd import TColStd_Array1OfReal
+
+    from relief_cad.cad._compat import Array1OfPnt, Array1OfReal
 
     pts = np.asarray(points, dtype=float)
     if pts.shape[1] == 2:
         pts = np.hstack([pts, np.zeros((len(pts), 1))])
-    arr = TColgp_Array1OfPnt(1, len(pts))
+    arr = Array1OfPnt(1, len(pts))
     for i, p in enumerate(pts):
         arr.SetValue(i + 1, gp_Pnt(float(p[0]), float(p[1]), float(p[2])))
     if weights is None:
         curve = Geom_BezierCurve(arr)
     else:
-        w = TColStd_Array1OfReal(1, len(pts))
+        w = Array1OfReal(1, len(pts))
         for i, x in enumerate(weights):
             w.SetValue(i + 1, float(x))
         curve = Geom_BezierCurve(arr, w)

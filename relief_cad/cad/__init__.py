@@ -13,7 +13,8 @@ this one.
 * :func:`compare` -- relief_cad against OCCT, every disagreement judged by a 50-digit arbiter.
 
 A missing CAD package raises :class:`~relief_cad.errors.AdapterUnavailableError`
-with the install hint ``pip install "relief-cad[cad]"``.
+naming the extra to install (``relief-cad[build123d]`` or ``relief-cad[cadquery]``); a
+missing OCP and an unsupported OCP release get different messages (see :mod:`._compat`).
 
 >>> from relief_cad import cad
 >>> sorted(cad.__all__)[:3]
@@ -22,6 +23,7 @@ with the install hint ``pip install "relief-cad[cad]"``.
 
 from __future__ import annotations
 
+from . import _compat  # noqa: F401  first: refuses a missing or unsupported OCP with a clear error
 from .api import intersect, intersections, planar_curves, segments, split
 from .compare import (
     Comparison,

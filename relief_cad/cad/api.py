@@ -41,25 +41,22 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+from OCP.BRep import BRep_Tool
+from OCP.TopExp import TopExp
 
 from .._kernels import KIND_CROSSING, KIND_TANGENT, KIND_UNRESOLVED, intersect_batch_kernel
 from ..curves import RationalBezier
-from ..errors import AdapterUnavailableError, InvalidInputError
+from ..errors import InvalidInputError
 from ..intersection import DEFAULT_BUDGET
 from ..results import Intersection, Overlap
 from ..tolerances import default_tolerance
 from . import ocp
+from ._checks import check_tol
+from .flavour import flavour_of, wrap_edge, wrap_edges, wrap_vertices
 from .results import EdgeIntersection, EdgeOverlap, EdgeResult
+from .topology import usable_edges
 
-try:
-    from OCP.BRep import BRep_Tool
-    from OCP.TopExp import TopExp
-except ImportError as exc:  # pragma: no cover - ocp above raises first
-    raise AdapterUnavailableError(
-        'relief_cad.cad needs OCP (cadquery-ocp); install it with: pip install "relief-cad[cad]"'
-    ) from exc
-
-__all__ = ["flavour_of", "intersect", "intersections", "planar_curves", "segments", "split"]
+__all__ = ["intersect", "intersections", "planar_curves", "segments", "split"]
 
 _PLANE_FRACTION = 1e-3  # control points within tol * this of a plane count as coplanar
 _MEANINGFUL_FRACTION = 1e-3  # an OCCT tolerance above this fraction of the size is not used
@@ -130,7 +127,7 @@ def planar_curves(
     (2, [[0.0, 0.0], [3.0, 4.0]])
     """
     pts = np.vstack([s.control_points for s in segs])
-    limit = default_tolerance(pts) * _PLANE_FRACTION if tol is None else _check_tol(tol)
+    limit = default_tolerance(pts) * _PLANE_FRACTION if tol is None else check_tol(tol)
     if float(pts[:, 2].max() - pts[:, 2].min()) <= limit:
         frame = _XY_FRAME
     else:
@@ -141,63 +138,6 @@ def planar_curves(
             )
         frame = found
     return frame.copy(), [_to_plane(s, frame) for s in segs]
-
-
-# --------------------------------------------------------------------------- flavours
-def flavour_of(obj: Any) -> str:
-    """Return ``"build123d"``, ``"cadquery"`` or ``"ocp"``: the library an input comes from.
-
-    Examples
-    --------
-    >>> flavour_of([])
-    'ocp'
-    """
-    if isinstance(obj, (list, tuple)):
-        return flavour_of(obj[0]) if obj else "ocp"
-    mod = type(obj).__module__
-    if mod.startswith("build123d"):
-        return "build123d"
-    if mod.startswith("cadquery"):
-        return "cadquery"
-    return "ocp"
-
-
-_WRAPPERS: dict[str, Any] = {}  # flavour -> its adapter module, imported on first use
-
-
-def _wrapper(flavour: str) -> Any:
-    module = _WRAPPERS.get(flavour)
-    if module is None:
-        import importlib
-
-        module = _WRAPPERS[flavour] = importlib.import_module(f"{__package__}.{flavour}")
-    return module
-
-
-def _wrap_vertices(vertices: list[Any], flavour: str) -> Any:
-    if flavour == "build123d" or flavour == "cadquery":
-        return _wrapper(flavour).wrap_vertices(vertices)
-    return vertices
-
-
-def _wrap_edge(edge: Any, flavour: str) -> Any:
-    if flavour == "build123d":
-        from .build123d import wrap_edge
-
-        return wrap_edge(edge)
-    if flavour == "cadquery":
-        from .cadquery import wrap_edge as cq_wrap_edge
-
-        return cq_wrap_edge(edge)
-    return edge
-
-
-def _wrap_edges(edges: list[Any], flavour: str) -> Any:
-    if flavour == "build123d":
-        from .build123d import wrap_edges
-
-        return wrap_edges(edges)
-    return [_wrap_edge(e, flavour) for e in edges]
 
 
 # --------------------------------------------------------------------------- preparation
@@ -230,11 +170,10 @@ class _EdgeInfo:
         return self._vertices
 
 
-def _prepare(shape: Any) -> list[_EdgeInfo]:
+def _prepare(shape: Any, name: str) -> list[_EdgeInfo]:
     infos = []
-    for index, edge in enumerate(ocp.edges_of(shape)):
-        if BRep_Tool.Degenerated_s(edge):
-            continue
+    edges, _skipped = usable_edges(shape, name)  # degenerated edges skipped, unbounded ones refused
+    for index, edge in edges:
         segs = ocp.edge_segments(edge)
         rows = [s.homogeneous.tolist() for s in segs]
         lows, highs, xy, ws = _boxes(segs, rows)
@@ -338,18 +277,6 @@ def _common_frame(
 
 
 _XY_FRAME = np.array([[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0]])
-
-
-def _check_tol(tol: Any) -> float:
-    try:
-        value = float(tol)
-    except (TypeError, ValueError):
-        value = float("nan")
-    if not (math.isfinite(value) and value > 0.0):
-        from ..errors import ToleranceError
-
-        raise ToleranceError(f"tol should be a finite distance > 0 (model units), not {tol!r}")
-    return value
 
 
 def _to_plane(segment: ocp.Segment, frame: np.ndarray) -> RationalBezier:
@@ -727,18 +654,13 @@ def _close_edge_pairs(infos_a: list[_EdgeInfo], infos_b: list[_EdgeInfo], tol: f
 
 
 def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float, list[_EdgeInfo]]:
+    given_tol = None if tol is None else check_tol(tol)
     flavour = flavour_of(a)
-    infos_a = _prepare(a)
-    if b is None:
-        infos_b = infos_a
-    else:
-        infos_b = _prepare(b)
-    if not infos_a or (b is not None and not infos_b):
-        which = "a" if not infos_a else "b"
-        raise InvalidInputError(f"expected shape {which} to have at least one edge with a curve; it has none")
+    infos_a = _prepare(a, "a")
+    infos_b = infos_a if b is None else _prepare(b, "b")
     everyone = infos_a if b is None else infos_a + infos_b
     box = _joint_box(everyone)
-    ftol = _default_tol(everyone, box) if tol is None else _check_tol(tol)
+    ftol = _default_tol(everyone, box) if given_tol is None else given_tol
     frame = _common_frame(everyone, ftol, box)
     _set_plane(everyone, frame)
     planar = frame is not None
@@ -810,7 +732,7 @@ def intersections(a: Any, b: Any = None, *, tol: float | None = None) -> list[Ed
 
     def native(info: _EdgeInfo) -> Any:
         if id(info) not in natives:
-            natives[id(info)] = _wrap_edge(info.edge, flavour)
+            natives[id(info)] = wrap_edge(info.edge, flavour)
         return natives[id(info)]
 
     for r in raws:
@@ -819,7 +741,7 @@ def intersections(a: Any, b: Any = None, *, tol: float | None = None) -> list[Ed
         native_b = native(eb)
         approx = ea.approximate or eb.approximate
         if r.kind == "overlap":
-            common = _wrap_edge(ocp.trim_edge(ea.edge, r.t[0], r.t[1]), flavour)
+            common = wrap_edge(ocp.trim_edge(ea.edge, r.t[0], r.t[1]), flavour)
             out.append(EdgeOverlap(ea.index, eb.index, native_a, native_b, r.t, r.u, common,
                                    approximate=approx))
         else:
@@ -867,7 +789,7 @@ def intersect(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
         for p in cands:
             if not any(math.dist(p, q) <= ftol for q in points):
                 points.append(p)
-    return _wrap_vertices([ocp.make_vertex(p) for p in points], flavour)
+    return wrap_vertices([ocp.make_vertex(p) for p in points], flavour)
 
 
 def split(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
@@ -931,4 +853,4 @@ def split(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
             pieces.append(edge)
             continue
         pieces.extend(ocp.trim_edge(edge, t0, t1) for t0, t1 in zip(params, params[1:], strict=False))
-    return _wrap_edges(pieces, flavour)
+    return wrap_edges(pieces, flavour)

@@ -22,10 +22,10 @@ try:
     import build123d as _bd
 except ImportError as exc:  # pragma: no cover - exercised only without build123d
     raise AdapterUnavailableError(
-        'relief_cad.cad.build123d needs build123d; install it with: pip install "relief-cad[cad]"'
+        'relief_cad.cad.build123d needs build123d; install it with: pip install "relief-cad[build123d]"'
     ) from exc
 
-from . import api
+from . import api, flavour
 from .results import EdgeResult
 
 __all__ = ["intersect", "intersections", "split", "wrap_edge", "wrap_edges", "wrap_vertices"]
@@ -39,7 +39,7 @@ def wrap_vertices(vertices: list[Any]) -> Any:
     >>> wrap_vertices([])
     []
     """
-    return _bd.ShapeList([_bd.Vertex(v) for v in vertices])
+    return flavour.wrap_vertices(vertices, "build123d")
 
 
 def wrap_edge(edge: Any) -> Any:
@@ -52,7 +52,7 @@ def wrap_edge(edge: Any) -> Any:
     >>> wrap_edge(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0)).Edge()).length
     1.0
     """
-    return _bd.Edge(edge)
+    return flavour.wrap_edge(edge, "build123d")
 
 
 def wrap_edges(edges: list[Any]) -> Any:
@@ -63,7 +63,7 @@ def wrap_edges(edges: list[Any]) -> Any:
     >>> wrap_edges([])
     []
     """
-    return _bd.ShapeList([_bd.Edge(e) for e in edges])
+    return flavour.wrap_edges(edges, "build123d")
 
 
 def intersect(a: Any, b: Any = None, *, tol: float | None = None) -> Any:

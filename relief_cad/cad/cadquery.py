@@ -27,10 +27,10 @@ try:
     import cadquery as _cq
 except ImportError as exc:  # pragma: no cover - exercised only without CadQuery
     raise AdapterUnavailableError(
-        'relief_cad.cad.cadquery needs CadQuery; install it with: pip install "relief-cad[cad]"'
+        'relief_cad.cad.cadquery needs CadQuery; install it with: pip install "relief-cad[cadquery]"'
     ) from exc
 
-from . import api
+from . import api, flavour
 from .results import EdgeResult
 
 __all__ = [
@@ -52,7 +52,7 @@ def wrap_vertices(vertices: list[Any]) -> list[Any]:
     >>> wrap_vertices([])
     []
     """
-    return [_cq.Vertex(v) for v in vertices]
+    return flavour.wrap_vertices(vertices, "cadquery")  # type: ignore[no-any-return]
 
 
 def wrap_edge(edge: Any) -> Any:
@@ -65,7 +65,7 @@ def wrap_edge(edge: Any) -> Any:
     >>> wrap_edge(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0)).Edge()).Length()
     1.0
     """
-    return _cq.Edge(edge)
+    return flavour.wrap_edge(edge, "cadquery")
 
 
 def _shapes(obj: Any) -> Any:

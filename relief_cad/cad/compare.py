@@ -5,16 +5,10 @@
 (points within the tolerance, overlaps whose parameter ranges meet), and sends every
 disagreement to an arbiter that decides who is right.
 
-The arbiter works in high precision (mpmath, 50 digits) on the exact data of the edges'
-curves: OCCT's own definition of each curve (poles, weights and knots of Bézier and
-B-spline curves, axis placements and radii of lines and conics, the edge location's
-matrix), each binary64 number taken exactly. Every parameter is therefore the edge's own
-parameter, and the arbiter shares no conversion code with either contender. A point
-candidate is refined by Gauss-Newton on ``a(t) - b(u) = 0`` (which converges to the local
-minimum of the distance for a near miss) and judged by its true distance against ``tol``;
-an overlap claim is checked by sampling the claimed range of ``a`` and finding the closest
-point of ``b`` to each sample in high precision. Curve types without exact data (offset
-curves...) are evaluated by OCCT in binary64 and the verdict says so.
+This module holds the matching and the comparison types (:class:`Comparison`,
+:class:`Match`, :class:`Disagreement`, :class:`Verdict`). The exact curve data lives in
+:mod:`.exact`, the arbiter in :mod:`.arbiter`, the pictures in :mod:`.render`; their public
+names are re-exported here.
 
 >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
 >>> from OCP.gp import gp_Pnt
@@ -30,18 +24,25 @@ from __future__ import annotations
 import base64
 import dataclasses
 import html
-import io
 import math
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
-import numpy as np
-
-from ..errors import InvalidInputError, ShapeError
-from .occt import default_occt_tolerance, occt_intersections, unique_edges
+from ._checks import check_tol
+from .arbiter import (
+    OverlapCheck,
+    PointCheck,
+    _closest_u,
+    arbitrate_overlap,
+    arbitrate_point,
+)
+from .exact import ARBITER_DIGITS, ExactCurve
+from .occt import default_occt_tolerance, occt_intersections
+from .render import plot_pair_png, where
 from .results import EdgeIntersection, EdgeOverlap, EdgeResult
+from .topology import edges_of, usable_edges
 
 __all__ = [
     "ARBITER_DIGITS",
@@ -55,533 +56,11 @@ __all__ = [
     "arbitrate_overlap",
     "arbitrate_point",
     "compare",
+    "plot_pair_png",
 ]
 
-ARBITER_DIGITS = 50
-"""Decimal digits of the arbiter's arithmetic."""
 
 Side = Literal["relief_cad", "occt"]
-
-
-def _mp() -> Any:
-    import mpmath
-
-    return mpmath.mp.clone() if hasattr(mpmath.mp, "clone") else mpmath.mp
-
-
-# --------------------------------------------------------------------------- exact curves
-
-
-class ExactCurve:
-    """An edge's 3D curve evaluated in high precision from OCCT's exact definition.
-
-    Parameters
-    ----------
-    edge : TopoDS_Edge, build123d Edge or CadQuery Edge
-        The edge; its location is applied, its own parameter is used.
-
-    Examples
-    --------
-    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
-    >>> from OCP.gp import gp_Ax2, gp_Circ, gp_Dir, gp_Pnt
-    >>> circle = BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 2.0)).Edge()
-    >>> c = ExactCurve(circle)
-    >>> c.exact, [round(float(x), 12) + 0.0 for x in c.value(c.mp.pi / 2)]
-    (True, [0.0, 2.0, 0.0])
-    """
-
-    def __init__(self, edge: Any) -> None:
-        import mpmath
-        from OCP.BRep import BRep_Tool
-        from OCP.TopLoc import TopLoc_Location
-
-        self.mp = mpmath.mp
-        raw = getattr(edge, "wrapped", edge)
-        loc = TopLoc_Location()
-        curve = BRep_Tool.Curve_s(raw, loc, 0.0, 0.0)
-        self.first, self.last = (float(x) for x in BRep_Tool.Range_s(raw))
-        trsf = loc.Transformation()
-        self._matrix = [[self._f(trsf.Value(i, j)) for j in range(1, 5)] for i in range(1, 4)]
-        self._identity = loc.IsIdentity()
-        self._occt_curve = BRep_Tool.Curve_s(raw, 0.0, 0.0)
-        self.exact = True
-        self._eval = self._build(curve)
-        pts = [self._occt_curve.Value(float(t)) for t in np.linspace(self.first, self.last, 9)]
-        arr = np.array([[p.X(), p.Y(), p.Z()] for p in pts])
-        self.size = float(np.linalg.norm(arr.max(axis=0) - arr.min(axis=0))) or 1.0
-
-    def _f(self, x: float) -> Any:
-        return self.mp.mpf(float(x))
-
-    def _build(self, curve: Any) -> Any:
-        from OCP.Geom import (
-            Geom_BezierCurve,
-            Geom_BSplineCurve,
-            Geom_Circle,
-            Geom_Ellipse,
-            Geom_Hyperbola,
-            Geom_Line,
-            Geom_Parabola,
-            Geom_TrimmedCurve,
-        )
-
-        mp, f = self.mp, self._f
-        while isinstance(curve, Geom_TrimmedCurve):
-            curve = curve.BasisCurve()
-
-        def vec(v: Any) -> list[Any]:
-            return [f(v.X()), f(v.Y()), f(v.Z())]
-
-        if isinstance(curve, Geom_Line):
-            ax = curve.Position()
-            p, d = vec(ax.Location()), vec(ax.Direction())
-            return lambda t: [p[k] + t * d[k] for k in range(3)]  # noqa: B023
-        if isinstance(curve, (Geom_Circle, Geom_Ellipse, Geom_Hyperbola, Geom_Parabola)):
-            ax = curve.Position()
-            c, x, y = vec(ax.Location()), vec(ax.XDirection()), vec(ax.YDirection())
-            if isinstance(curve, Geom_Circle):
-                r = f(curve.Radius())
-                return lambda t: [c[k] + r * (mp.cos(t) * x[k] + mp.sin(t) * y[k]) for k in range(3)]
-            if isinstance(curve, Geom_Ellipse):
-                ra, rb = f(curve.MajorRadius()), f(curve.MinorRadius())
-                return lambda t: [c[k] + ra * mp.cos(t) * x[k] + rb * mp.sin(t) * y[k] for k in range(3)]
-            if isinstance(curve, Geom_Hyperbola):
-                ra, rb = f(curve.MajorRadius()), f(curve.MinorRadius())
-                return lambda t: [c[k] + ra * mp.cosh(t) * x[k] + rb * mp.sinh(t) * y[k] for k in range(3)]
-            foc = f(curve.Focal())
-            return lambda t: [c[k] + t * t / (4 * foc) * x[k] + t * y[k] for k in range(3)]
-        if isinstance(curve, Geom_BezierCurve):
-            n = curve.NbPoles()
-            hom = [[*vec(curve.Pole(i)), f(curve.Weight(i))] for i in range(1, n + 1)]
-            hom = [[h[0] * h[3], h[1] * h[3], h[2] * h[3], h[3]] for h in hom]
-
-            binom = [mp.mpf(math.comb(n - 1, i)) for i in range(n)]
-
-            def bezier(t: Any) -> list[Any]:
-                # Bernstein sum (all terms positive on [0, 1]; exact data, 50 digits)
-                s_ = 1 - t
-                tp = [mp.mpf(1)]
-                sp = [mp.mpf(1)]
-                for _ in range(n - 1):
-                    tp.append(tp[-1] * t)
-                    sp.append(sp[-1] * s_)
-                acc = [mp.mpf(0)] * 4
-                for i in range(n):
-                    c = binom[i] * tp[i] * sp[n - 1 - i]
-                    h = hom[i]
-                    for k in range(4):
-                        acc[k] += c * h[k]
-                return [acc[k] / acc[3] for k in range(3)]
-
-            return bezier
-        if isinstance(curve, Geom_BSplineCurve):
-            bs = curve
-            if bs.IsPeriodic():
-                bs = bs.Copy()  # OCP hands back the most derived type
-                bs.SetNotPeriodic()
-            p = bs.Degree()
-            knots = [f(bs.Knot(i)) for i in range(1, bs.NbKnots() + 1)]
-            flat: list[Any] = []
-            for i in range(1, bs.NbKnots() + 1):
-                flat.extend([knots[i - 1]] * bs.Multiplicity(i))
-            hom = [[*vec(bs.Pole(i)), f(bs.Weight(i))] for i in range(1, bs.NbPoles() + 1)]
-            hom = [[h[0] * h[3], h[1] * h[3], h[2] * h[3], h[3]] for h in hom]
-            # OCCT's flat knots have (poles + degree + 1) entries for non-periodic curves
-            lo_i, hi_i = p, len(hom) - 1
-
-            def bspline(t: Any) -> list[Any]:
-                span = lo_i
-                for s in range(lo_i, hi_i + 1):
-                    if flat[s] <= t:
-                        span = s
-                span = min(span, hi_i)
-                d = [list(hom[j + span - p]) for j in range(p + 1)]
-                for r in range(1, p + 1):
-                    for j in range(p, r - 1, -1):
-                        den = flat[j + 1 + span - r] - flat[j + span - p]
-                        alpha = (t - flat[j + span - p]) / den if den != 0 else mp.mpf(0)
-                        d[j] = [(1 - alpha) * d[j - 1][k] + alpha * d[j][k] for k in range(4)]
-                w = d[p][3]
-                return [d[p][k] / w for k in range(3)]
-
-            return bspline
-        # anything else: OCCT's binary64 evaluation (flagged)
-        self.exact = False
-        occ = curve
-
-        def fallback(t: Any) -> list[Any]:
-            q = occ.Value(float(t))
-            return [f(q.X()), f(q.Y()), f(q.Z())]
-
-        return fallback
-
-    def value(self, t: Any) -> list[Any]:
-        """Return the point at edge parameter ``t`` (global coordinates) as 3 mpf numbers.
-
-        >>> import build123d as bd
-        >>> [float(x) for x in ExactCurve(bd.Line((0, 0), (3, 4))).value(2.5)]
-        [1.5, 2.0, 0.0]
-        """
-        p: list[Any] = self._eval(self.mp.mpf(t))
-        if self._identity:
-            return p
-        m = self._matrix
-        return [m[i][0] * p[0] + m[i][1] * p[1] + m[i][2] * p[2] + m[i][3] for i in range(3)]
-
-    def derivative(self, t: Any) -> list[Any]:
-        """Return ``dP/dt`` at ``t`` (central difference at high precision).
-
-        >>> import build123d as bd
-        >>> [round(float(x), 12) for x in ExactCurve(bd.Line((0, 0), (3, 4))).derivative(1.0)]
-        [0.6, 0.8, 0.0]
-        """
-        mp = self.mp
-        h = mp.mpf(10) ** (-(mp.dps // 2 - 2)) * max(mp.mpf(1), abs(mp.mpf(self.last - self.first)))
-        t = mp.mpf(t)
-        lo, hi = max(t - h, mp.mpf(self.first) - h), t + h
-        p1, p0 = self.value(hi), self.value(lo)
-        return [(p1[k] - p0[k]) / (hi - lo) for k in range(3)]
-
-    def jet(self, t: Any) -> tuple[list[Any], list[Any], list[Any]]:
-        """Return ``P(t)``, ``P'(t)`` and ``P''(t)`` (central differences, step ``10**(-dps/3)``).
-
-        >>> import build123d as bd
-        >>> p, d1, d2 = ExactCurve(bd.Line((0, 0), (3, 4))).jet(1.0)  # at mpmath's working precision
-        >>> [round(float(x), 6) + 0.0 for x in d1 + d2]
-        [0.6, 0.8, 0.0, 0.0, 0.0, 0.0]
-        """
-        mp = self.mp
-        h = mp.mpf(10) ** (-(mp.dps // 3)) * max(mp.mpf(1), abs(mp.mpf(self.last - self.first)))
-        t = mp.mpf(t)
-        p0, pm, pp = self.value(t), self.value(t - h), self.value(t + h)
-        d1 = [(pp[k] - pm[k]) / (2 * h) for k in range(3)]
-        d2 = [(pp[k] - 2 * p0[k] + pm[k]) / (h * h) for k in range(3)]
-        return p0, d1, d2
-
-    def clamp(self, t: Any) -> Any:
-        """Clamp ``t`` into the edge's parameter range.
-
-        >>> import build123d as bd
-        >>> float(ExactCurve(bd.Line((0, 0), (3, 4))).clamp(7.0))
-        5.0
-        """
-        return min(max(t, self.mp.mpf(self.first)), self.mp.mpf(self.last))
-
-
-# --------------------------------------------------------------------------- arbiter
-
-
-@dataclass(frozen=True)
-class PointCheck:
-    """The arbiter's finding near a point candidate.
-
-    >>> import build123d as bd
-    >>> check = arbitrate_point(bd.Line((0, 0), (2, 2)), bd.Line((0, 2), (2, 0)), 1.4, 1.4, tol=1e-7)
-    >>> check.kind, check.holds, round(check.t, 12)
-    ('crossing', True, 1.414213562373)
-
-    Attributes
-    ----------
-    t, u : float
-        Refined edge parameters (local minimum of the distance, inside both ranges).
-    point : tuple of float
-        The refined common point (mean of ``a(t)`` and ``b(u)``).
-    distance : float
-        The true distance ``|a(t) - b(u)|`` there, computed with 50 digits.
-    sine : float
-        Sine of the angle between the two tangents (0 for a tangent contact).
-    kind : {"crossing", "tangent", "miss"}
-        ``"miss"`` when the distance exceeds the tolerance.
-    holds : bool
-        True when the refined distance is within the tolerance.
-    exact : bool
-        False when a curve had no exact data (evaluated by OCCT in binary64).
-    """
-
-    t: float
-    u: float
-    point: tuple[float, float, float]
-    distance: float
-    sine: float
-    kind: str
-    holds: bool
-    exact: bool = True
-
-
-@dataclass(frozen=True)
-class OverlapCheck:
-    """The arbiter's finding on an overlap claim ``a[t0, t1] == b[u0, u1]``.
-
-    >>> import build123d as bd
-    >>> a, b = bd.Line((0, 0), (4, 0)), bd.Line((1, 0), (3, 0))
-    >>> check = arbitrate_overlap(a, b, (1.0, 3.0), (0.0, 2.0), tol=1e-7)
-    >>> check.status, check.holds
-    ('coincident', True)
-
-    Attributes
-    ----------
-    status : {"coincident", "within_tolerance", "tangent", "crossing", "none"}
-        ``"coincident"``: the curves coincide along the range up to rounding of their
-        data; ``"within_tolerance"``: they stay closer than ``tol`` without touching at
-        an isolated point (a genuine near-coincident stretch); ``"tangent"`` /
-        ``"crossing"``: the true answer in the range is isolated point(s) (the first one's
-        kind); ``"none"``: nothing within tolerance.
-    max_distance : float
-        The largest sampled distance from ``a`` to ``b`` over the range.
-    points : tuple of PointCheck
-        The isolated true points found in the range (for the non-overlap statuses).
-    min_distance : float
-        The smallest sampled distance (set for ``"none"``).
-    """
-
-    status: str
-    max_distance: float
-    points: tuple[PointCheck, ...] = ()
-    min_distance: float = 0.0
-
-    @property
-    def holds(self) -> bool:
-        """True when the overlap claim is right (coincident or within tolerance).
-
-        >>> OverlapCheck(status="none", max_distance=1.0).holds
-        False
-        """
-        return self.status in ("coincident", "within_tolerance")
-
-
-def _exact(edge: Any, cache: dict[int, ExactCurve] | None = None) -> ExactCurve:
-    if isinstance(edge, ExactCurve):
-        return edge
-    return ExactCurve(edge)
-
-
-def _refine(
-    ca: ExactCurve, cb: ExactCurve, t0: float, u0: float, *, same: bool = False
-) -> tuple[Any, Any, Any]:
-    """Newton on the gradient of ``|a(t) - b(u)|**2 / 2``: a local minimum of the distance.
-
-    The full Hessian (with the curvature terms ``r . a''``) makes near misses converge
-    quadratically; where it is not positive definite the Gauss-Newton matrix is used. Each
-    iteration also tries the doubled step, which restores fast convergence at tangent
-    contacts (a double root), and backtracks when the distance would grow. Parameters are
-    clamped to the edges' ranges.
-    """
-    mp = ca.mp
-    t, u = ca.clamp(mp.mpf(t0)), cb.clamp(mp.mpf(u0))
-    size = max(ca.size, cb.size)
-    eps2 = (mp.mpf(10) ** (-(mp.dps - 8)) * size) ** 2
-    rel = mp.mpf(10) ** (-(mp.dps // 2))
-
-    def d2(tt: Any, uu: Any) -> Any:
-        qa, qb = ca.value(tt), cb.value(uu)
-        return sum((qa[k] - qb[k]) ** 2 for k in range(3))
-
-    cur = d2(t, u)
-    for _ in range(150):
-        if cur < eps2:
-            break
-        pa, da, dda = ca.jet(t)
-        pb, db, ddb = cb.jet(u)
-        r = [pa[k] - pb[k] for k in range(3)]
-        g1 = sum(da[k] * r[k] for k in range(3))
-        g2 = -sum(db[k] * r[k] for k in range(3))
-        a11 = sum(x * x for x in da)
-        a22 = sum(x * x for x in db)
-        a12 = -sum(da[k] * db[k] for k in range(3))
-        h11 = a11 + sum(dda[k] * r[k] for k in range(3))
-        h22 = a22 - sum(ddb[k] * r[k] for k in range(3))
-        if h11 > 0 and h22 > 0 and h11 * h22 - a12 * a12 > 0:
-            a11, a22 = h11, h22
-        lam = (a11 + a22) * mp.mpf(10) ** (-(mp.dps - 10))
-        det = (a11 + lam) * (a22 + lam) - a12 * a12
-        if det == 0:
-            break
-        dt = -((a22 + lam) * g1 - a12 * g2) / det
-        du = -((a11 + lam) * g2 - a12 * g1) / det
-        nt, nu = ca.clamp(t + dt), cb.clamp(u + du)
-        best: tuple[Any, Any, Any] = (d2(nt, nu), nt, nu)
-        nt, nu = ca.clamp(t + 2 * dt), cb.clamp(u + 2 * du)
-        val = d2(nt, nu)
-        if val < best[0]:
-            best = (val, nt, nu)
-        step = mp.mpf(1)
-        while best[0] > cur and step > mp.mpf(2) ** -40:  # backtrack
-            step /= 2
-            nt, nu = ca.clamp(t + step * dt), cb.clamp(u + step * du)
-            best = (d2(nt, nu), nt, nu)
-        if best[0] > cur:
-            break
-        val, nt, nu = best
-        small = abs(nt - t) <= (abs(t) + 1) * rel and abs(nu - u) <= (abs(u) + 1) * rel
-        t, u, cur = nt, nu, val
-        if small:
-            break
-    return t, u, mp.sqrt(cur)
-
-
-def _point_check(ca: ExactCurve, cb: ExactCurve, t: Any, u: Any, dist: Any, tol: float) -> PointCheck:
-    mp = ca.mp
-    pa, pb = ca.value(t), cb.value(u)
-    da, db = ca.derivative(t), cb.derivative(u)
-    cross = [da[1] * db[2] - da[2] * db[1], da[2] * db[0] - da[0] * db[2], da[0] * db[1] - da[1] * db[0]]
-    na, nb = mp.sqrt(sum(x * x for x in da)), mp.sqrt(sum(x * x for x in db))
-    sine = float(mp.sqrt(sum(x * x for x in cross)) / (na * nb)) if na * nb != 0 else 0.0
-    holds = float(dist) <= tol
-    # tangent: the curves stay within tol over a stretch much longer than tol (sine small)
-    tangent = sine < math.sqrt(tol / max(ca.size, cb.size, 1e-300)) * 1e-1 or sine < 1e-12
-    kind = ("tangent" if tangent else "crossing") if holds else "miss"
-    point = tuple(float((pa[k] + pb[k]) / 2) for k in range(3))
-    return PointCheck(float(t), float(u), point, float(dist), sine, kind, holds, ca.exact and cb.exact)  # type: ignore[arg-type]
-
-
-def arbitrate_point(
-    a: Any, b: Any, t: float, u: float, *, tol: float, digits: int = ARBITER_DIGITS
-) -> PointCheck:
-    """Refine a point candidate ``a(t) ~ b(u)`` in high precision and judge it against ``tol``.
-
-    Parameters
-    ----------
-    a, b : TopoDS_Edge, build123d Edge, CadQuery Edge or ExactCurve
-        The two edges (the same edge twice for a double point).
-    t, u : float
-        The candidate's edge parameters.
-    tol : float
-        The distance tolerance in model units.
-    digits : int
-        Decimal digits of the arithmetic.
-
-    Returns
-    -------
-    PointCheck
-        The refined parameters, true distance, tangent sine and verdict.
-
-    Examples
-    --------
-    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
-    >>> from OCP.gp import gp_Pnt
-    >>> a = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0)).Edge()
-    >>> b = BRepBuilderAPI_MakeEdge(gp_Pnt(0.5, 1e-3, 0), gp_Pnt(0.5, 1, 0)).Edge()
-    >>> c = arbitrate_point(a, b, 0.5, 0.0, tol=1e-7)
-    >>> c.holds, c.kind, round(c.distance, 12)
-    (False, 'miss', 0.001)
-    """
-    import mpmath
-
-    with mpmath.workdps(digits):
-        ca, cb = _exact(a), _exact(b)
-        rt, ru, dist = _refine(ca, cb, t, u)
-        return _point_check(ca, cb, rt, ru, dist, tol)
-
-
-def _closest_u(ca: ExactCurve, cb: ExactCurve, t: Any, u0: Any) -> tuple[Any, Any]:
-    mp = ca.mp
-    pa = ca.value(t)
-    u = cb.clamp(mp.mpf(u0))
-    for _ in range(200):
-        pb, db = cb.value(u), cb.derivative(u)
-        r = [pa[k] - pb[k] for k in range(3)]
-        den = sum(x * x for x in db)
-        if den == 0:
-            break
-        du = sum(r[k] * db[k] for k in range(3)) / den
-        nu = cb.clamp(u + du)
-        if abs(nu - u) <= (abs(u) + 1) * mp.mpf(10) ** (-(mp.dps // 2)):
-            u = nu
-            break
-        u = nu
-    pb = cb.value(u)
-    return u, mp.sqrt(sum((pa[k] - pb[k]) ** 2 for k in range(3)))
-
-
-def arbitrate_overlap(
-    a: Any,
-    b: Any,
-    t: tuple[float, float],
-    u: tuple[float, float],
-    *,
-    tol: float,
-    samples: int = 33,
-    digits: int = ARBITER_DIGITS,
-) -> OverlapCheck:
-    """Check an overlap claim ``a[t0, t1] == b[u0, u1]`` by sampling both curves in high precision.
-
-    For ``samples`` parameters evenly spread over ``[t0, t1]`` the closest point of ``b``
-    is found by Newton's method in 50-digit arithmetic. The claim holds when every
-    distance is within ``tol``; it is then ``"coincident"`` when the distances are at the
-    rounding level of the data (``1e-3 tol`` or ``1e-13`` of the curves' size, the
-    larger), and otherwise ``"within_tolerance"`` unless the distance has an isolated
-    minimum far below the rest (a tangent contact that a tolerance stretched into a
-    segment: the verdict is then ``"tangent"``). A claim that fails is resolved into the
-    true isolated points in the range.
-
-    Parameters
-    ----------
-    a, b : TopoDS_Edge, build123d Edge, CadQuery Edge or ExactCurve
-        The two edges.
-    t, u : tuple of float
-        The claimed ranges, ``a(t[0]) = b(u[0])`` and ``a(t[1]) = b(u[1])``.
-    tol : float
-        The distance tolerance.
-    samples : int
-        Number of samples along ``[t0, t1]``.
-    digits : int
-        Decimal digits of the arithmetic.
-
-    Returns
-    -------
-    OverlapCheck
-
-    Examples
-    --------
-    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
-    >>> from OCP.gp import gp_Pnt
-    >>> a = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(2, 0, 0)).Edge()
-    >>> b = BRepBuilderAPI_MakeEdge(gp_Pnt(1, 0, 0), gp_Pnt(3, 0, 0)).Edge()
-    >>> arbitrate_overlap(a, b, (1.0, 2.0), (0.0, 1.0), tol=1e-7).status
-    'coincident'
-    """
-    import mpmath
-
-    if samples < 3:
-        raise InvalidInputError(f"expected at least 3 samples, received {samples}")
-    with mpmath.workdps(digits):
-        ca, cb = _exact(a), _exact(b)
-        mp = ca.mp
-        t0, t1 = mp.mpf(t[0]), mp.mpf(t[1])
-        u0, u1 = mp.mpf(u[0]), mp.mpf(u[1])
-        ts = [t0 + (t1 - t0) * mp.mpf(i) / (samples - 1) for i in range(samples)]
-        dists, us = [], []
-        for i, ti in enumerate(ts):
-            ui, di = _closest_u(ca, cb, ti, u0 + (u1 - u0) * mp.mpf(i) / (samples - 1))
-            us.append(ui)
-            dists.append(di)
-        dmax = float(max(dists))
-        rounding = max(1e-3 * tol, 1e-13 * max(ca.size, cb.size))
-        if dmax <= rounding:
-            return OverlapCheck("coincident", dmax)
-        # isolated minima in the range
-        found: list[PointCheck] = []
-        minima = [
-            i
-            for i in range(samples)
-            if dists[i] <= (dists[i - 1] if i > 0 else mp.inf)
-            and dists[i] <= (dists[i + 1] if i < samples - 1 else mp.inf)
-        ]
-        # the deepest few (a flat, noisy distance profile has many shallow ones)
-        for i in sorted(minima, key=lambda j: dists[j])[:6]:
-            if True:
-                rt, ru, dist = _refine(ca, cb, ts[i], us[i])
-                check = _point_check(ca, cb, rt, ru, dist, tol)
-                if check.holds and not any(abs(check.t - f.t) <= 1e-9 * (1 + abs(f.t)) for f in found):
-                    found.append(check)
-        if dmax <= tol:
-            dmin = min(f.distance for f in found) if found else float(min(dists))
-            if found and dmin * 10 < dmax and (dmin <= rounding or dmin * 1e3 < tol):
-                return OverlapCheck("tangent", dmax, tuple(found))
-            return OverlapCheck("within_tolerance", dmax)
-        if not found:
-            return OverlapCheck("none", dmax, (), float(min(dists)))
-        return OverlapCheck(found[0].kind, dmax, tuple(found))
 
 
 # --------------------------------------------------------------------------- comparison
@@ -756,6 +235,10 @@ class Comparison:
     errors : dict
         Exceptions raised by a side (``{"relief_cad": "ValueError: ..."}``); that side's
         answer is then empty and every claim of the other side is arbitrated.
+    skipped : list of (str, int, str)
+        Edges that took no part: ``(shape, index, reason)`` with ``shape`` ``"a"`` or ``"b"``
+        and ``index`` in :func:`~relief_cad.cad.topology.edges_of` order (degenerated edges:
+        a sphere's poles, a cone's apex).
     """
 
     tol: float
@@ -769,6 +252,7 @@ class Comparison:
     edges_a: list[Any] = field(default_factory=list, repr=False)
     edges_b: list[Any] = field(default_factory=list, repr=False)
     plot: bool = False
+    skipped: list[tuple[str, int, str]] = field(default_factory=list)
 
     @property
     def only_relief(self) -> list[Disagreement]:
@@ -878,11 +362,11 @@ class Comparison:
         rows: list[tuple[str, str, str, str, str, str]] = []
         for m in self.agreed:
             r = m.relief
-            where = _where(r)
+            place = where(r)
             rows.append(
                 (
                     "agreed",
-                    where,
+                    place,
                     r.kind,
                     f"{m.distance:.2e}",
                     f"{max(m.dt, m.du):.2e}",
@@ -898,7 +382,7 @@ class Comparison:
             rows.append(
                 (
                     d.status,
-                    _where(d.claim),
+                    where(d.claim),
                     d.claim.kind,
                     f"{d.verdict.distance:.2e}",
                     "",
@@ -919,6 +403,8 @@ class Comparison:
         )
         if self.errors:
             head += "\n" + "\n".join(f"  error in {k}: {v}" for k, v in self.errors.items())
+        if self.skipped:
+            head += "\n" + "\n".join(f"  skipped edge {k}[{i}]: {why}" for k, i, why in self.skipped)
         cols = ("status", "where (edges: params)", "kind", "dist", "dparam", "verdict")
         rows = self._rows()
         if not rows:
@@ -999,127 +485,6 @@ class Comparison:
             [d.claim for d in self.disagreements],
             size=size,
         )
-
-
-def _where(r: EdgeResult) -> str:
-    if isinstance(r, EdgeIntersection):
-        return f"{r.index_a}/{r.index_b}: t={r.t:.10g} u={r.u:.10g}"
-    return f"{r.index_a}/{r.index_b}: t=[{r.t[0]:.6g},{r.t[1]:.6g}] u=[{r.u[0]:.6g},{r.u[1]:.6g}]"
-
-
-def _edge_range_polyline(edge: Any, t0: float, t1: float, n: int = 60) -> np.ndarray:
-    """Points of the edge on ``[t0, t1]`` from its exact data (24 digits).
-
-    OCCT's own evaluation of a high-degree Bézier curve goes through a power-basis cache
-    and can be visibly wrong (spikes) on ill-conditioned curves; the exact data is not.
-    """
-    import mpmath
-
-    with mpmath.workdps(24):
-        c = ExactCurve(edge)
-        pts = [[float(x) for x in c.value(mpmath.mpf(float(t)))] for t in np.linspace(t0, t1, n)]
-    out: np.ndarray = np.array(pts)
-    return out
-
-
-def _edge_polyline(edge: Any, n: int = 160) -> np.ndarray:
-    from OCP.BRep import BRep_Tool
-
-    first, last = BRep_Tool.Range_s(getattr(edge, "wrapped", edge))
-    return _edge_range_polyline(edge, first, last, n)
-
-
-def plot_pair_png(
-    edges_a: Sequence[Any],
-    edges_b: Sequence[Any],
-    relief: Sequence[EdgeResult],
-    occt: Sequence[EdgeResult],
-    highlight: Sequence[EdgeResult] = (),
-    *,
-    size: tuple[float, float] = (5.0, 4.0),
-    title: str = "",
-) -> bytes:
-    """Draw edges (projected on their best-fit plane) and both answers as PNG bytes.
-
-    Parameters
-    ----------
-    edges_a, edges_b : sequences of edges
-        The unique edges of both shapes.
-    relief, occt : sequences of results
-        relief_cad's answer (blue circles / thick blue) and OCCT's (red crosses / thin red).
-    highlight : sequence of results
-        Disagreements, ringed in orange.
-    size : tuple of float
-        Figure size in inches.
-    title : str
-        Figure title.
-
-    Returns
-    -------
-    bytes
-        The PNG file's bytes; empty when matplotlib is unavailable.
-    """
-    try:
-        import matplotlib
-
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:  # pragma: no cover - workbench extra not installed
-        return b""
-    polys = [_edge_polyline(e) for e in edges_a] + [_edge_polyline(e) for e in edges_b]
-    pts = np.vstack(polys) if polys else np.zeros((1, 3))
-    origin = pts.mean(axis=0)
-    centred = np.vstack([pts - origin, np.zeros((max(0, 3 - pts.shape[0]), 3))])
-    _, _, vt = np.linalg.svd(centred, full_matrices=False)  # thin: the full SVD is N x N
-    if abs(vt[2][2]) > 1 - 1e-9:
-        basis = np.array([[1.0, 0, 0], [0, 1.0, 0]])
-        origin = np.zeros(3)
-    else:
-        basis = vt[:2]
-
-    def proj(p: np.ndarray) -> np.ndarray:
-        q: np.ndarray = (np.atleast_2d(p) - origin) @ basis.T
-        return q
-
-    fig, ax = plt.subplots(figsize=size, dpi=80)
-    for k, poly in enumerate(polys):
-        q = proj(poly)
-        ax.plot(q[:, 0], q[:, 1], color="0.25" if k < len(edges_a) else "0.55", lw=1)
-    for res, color, marker, lw in ((relief, "tab:blue", "o", 5), (occt, "tab:red", "x", 2)):
-        for r in res:
-            if isinstance(r, EdgeIntersection):
-                q = proj(np.array(r.point))
-                ax.plot(
-                    q[:, 0],
-                    q[:, 1],
-                    marker=marker,
-                    color=color,
-                    ms=8 if marker == "o" else 9,
-                    mfc="none",
-                    mew=1.5,
-                )
-            else:
-                edge = edges_a[r.index_a] if r.index_a < len(edges_a) else None
-                if edge is not None:
-                    q = proj(_edge_range_polyline(edge, r.t[0], r.t[1]))
-                    ax.plot(q[:, 0], q[:, 1], color=color, lw=lw, alpha=0.6)
-    for r in highlight:
-        if isinstance(r, EdgeIntersection):
-            q = proj(np.array(r.point))
-        elif r.index_a < len(edges_a):
-            q = proj(_edge_range_polyline(edges_a[r.index_a], r.t[0], r.t[1], 3))[1:2]
-        else:
-            continue
-        ax.plot(q[:, 0], q[:, 1], marker="o", ms=18, mfc="none", color="orange", mew=2)
-    span = np.ptp(proj(pts), axis=0)
-    if span.min() > 0 and span.max() / span.min() < 8:
-        ax.set_aspect("equal", adjustable="datalim")
-    ax.set_title(title or "relief_cad (blue o) vs OCCT (red x); disagreements ringed", fontsize=8)
-    ax.tick_params(labelsize=7)
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", bbox_inches="tight")
-    plt.close(fig)
-    return buf.getvalue()
 
 
 # --------------------------------------------------------------------------- matching
@@ -1481,8 +846,9 @@ def compare(
 
     Parameters
     ----------
-    a : TopoDS_Shape, build123d Shape or CadQuery Shape
-        First shape (its unique edges take part).
+    a : TopoDS_Shape, build123d Shape or CadQuery Shape, or a list of them
+        First shape (its unique edges take part; degenerated edges are skipped and listed
+        in :attr:`Comparison.skipped`).
     b : same types, optional
         Second shape; ``None`` for self-intersections.
     tol : float, optional
@@ -1504,8 +870,10 @@ def compare(
     Raises
     ------
     ShapeError
-        A shape without edges (errors of either side on usable shapes are recorded in
-        :attr:`Comparison.errors` instead).
+        A shape without edges with a curve, or an edge on an unbounded curve (errors of
+        either side on usable shapes are recorded in :attr:`Comparison.errors` instead).
+    InputTypeError, ToleranceError
+        A ``tol`` that is not a number, or not a finite distance > 0.
 
     Examples
     --------
@@ -1519,14 +887,15 @@ def compare(
     """
     import mpmath
 
-    edges_a = unique_edges(a)
-    edges_b = edges_a if b is None else unique_edges(b)
-    for name, shape, edges in (("a", a, edges_a), ("b", b, edges_b)):
-        if not edges:
-            kind = type(shape).__name__
-            raise ShapeError(f"expected a shape with edges for {name}, received a {kind} with no edges")
-    if tol is None:
-        tol = default_occt_tolerance(*edges_a, *edges_b)
+    given_tol = None if tol is None else check_tol(tol)
+    edges_a, edges_b = edges_of(a), None if b is None else edges_of(b)
+    usable_a, skipped_a = usable_edges(a, "a")
+    usable_b, skipped_b = (usable_a, []) if b is None else usable_edges(b, "b")
+    skipped = [("a", i, why) for i, why in skipped_a] + [("b", i, why) for i, why in skipped_b]
+    if edges_b is None:
+        edges_b = edges_a
+    tol = default_occt_tolerance(*(e for _, e in usable_a), *(e for _, e in usable_b)) \
+        if given_tol is None else given_tol
     errors: dict[str, str] = {}
     times: dict[str, float] = {}
     t0 = time.perf_counter()
@@ -1547,8 +916,8 @@ def compare(
     t2 = time.perf_counter()
     times["relief_cad"], times["occt"] = t1 - t0, t2 - t1
     with mpmath.workdps(ARBITER_DIGITS):
-        exacts_a = [ExactCurve(e) for e in edges_a]
-        exacts_b = exacts_a if b is None else [ExactCurve(e) for e in edges_b]
+        exacts_a = _exact_curves(usable_a, len(edges_a))
+        exacts_b = exacts_a if b is None else _exact_curves(usable_b, len(edges_b))
         agreed, dis = _match_side(relief_res, occt_res, exacts_a, exacts_b, float(tol), b is None, refine)
     times["arbiter"] = time.perf_counter() - t2
     routes = list(dict.fromkeys(r.route for r in occt_res))
@@ -1564,4 +933,13 @@ def compare(
         list(edges_a),
         list(edges_b),
         plot,
+        skipped,
     )
+
+
+def _exact_curves(usable: list[tuple[int, Any]], n: int) -> list[Any]:
+    """Exact curves at the edges' indices (None at skipped, degenerated edges: no result names them)."""
+    out: list[Any] = [None] * n
+    for i, edge in usable:
+        out[i] = ExactCurve(edge)
+    return out

@@ -49,9 +49,14 @@ from typing import Any, Literal
 
 import numpy as np
 
-from ..errors import InputTypeError, InvalidInputError, OcctError, ShapeError
-from .api import flavour_of
+from ..errors import InvalidInputError, OcctError, ShapeError
+from ._checks import check_tol
+from ._compat import ListOfShape, downcast_edge, downcast_vertex
+from .curvetypes import basis_curve, curve_kind
+from .flavour import flavour_of, wrap_edge
+from .ocp import edge_with_3d_curve
 from .results import EdgeIntersection, EdgeOverlap, EdgeResult
+from .topology import edges_of, usable_edges
 
 __all__ = [
     "ROUTES",
@@ -73,67 +78,8 @@ _TANGENT_SINE = 1e-7
 # --------------------------------------------------------------------------- shapes in
 
 
-def _topods(shape: Any) -> Any:
-    """Return the raw ``TopoDS_Shape`` of a build123d/CadQuery/OCP shape."""
-    from OCP.TopoDS import TopoDS_Shape
-
-    raw = getattr(shape, "wrapped", shape)
-    if not isinstance(raw, TopoDS_Shape):
-        raise InputTypeError(
-            f"expected a TopoDS_Shape, build123d Shape or CadQuery Shape, received {type(shape).__name__}"
-        )
-    if raw.IsNull():
-        raise ShapeError("expected a non-null shape, received a null TopoDS_Shape")
-    return raw
-
-
-def _native_edge(edge: Any, flavour: str) -> Any:
-    if flavour == "build123d":
-        import build123d
-
-        return build123d.Edge(edge)
-    if flavour == "cadquery":
-        import cadquery
-
-        return cadquery.Edge(edge)
-    return edge
-
-
-def unique_edges(shape: Any) -> list[Any]:
-    """Return the unique ``TopoDS_Edge`` objects of a shape in ``TopExp_Explorer`` order.
-
-    Repeated occurrences of one edge (``IsSame``) are kept once, as in
-    :func:`relief_cad.cad.ocp.edges_of` (the indices of the results refer to this list).
-
-    Parameters
-    ----------
-    shape : TopoDS_Shape, build123d Shape or CadQuery Shape
-        Any shape.
-
-    Returns
-    -------
-    list of TopoDS_Edge
-        Possibly empty.
-
-    Examples
-    --------
-    >>> from OCP.BRepPrimAPI import BRepPrimAPI_MakeBox
-    >>> len(unique_edges(BRepPrimAPI_MakeBox(1.0, 2.0, 3.0).Shape()))
-    12
-    """
-    from OCP.TopAbs import TopAbs_EDGE
-    from OCP.TopExp import TopExp_Explorer
-    from OCP.TopoDS import TopoDS
-
-    raw = _topods(shape)
-    edges: list[Any] = []
-    explorer = TopExp_Explorer(raw, TopAbs_EDGE)
-    while explorer.More():
-        edge = TopoDS.Edge_s(explorer.Current())
-        if not any(edge.IsSame(e) for e in edges):
-            edges.append(edge)
-        explorer.Next()
-    return edges
+unique_edges = edges_of
+"""The unique edges of a shape: :func:`relief_cad.cad.topology.edges_of` (the same list, by construction)."""
 
 
 def default_occt_tolerance(*edges: Any) -> float:
@@ -180,21 +126,20 @@ def _fast_hull(curve: Any, first: float, last: float) -> np.ndarray | None:
     around them in their plane; Bézier and B-spline curves: their poles (of the whole curve, a
     superset for a trimmed edge). ``None`` for other types (converted by OCCT instead).
     """
-    from OCP.Geom import Geom_BezierCurve, Geom_BSplineCurve, Geom_Circle, Geom_Ellipse, Geom_Line
-
     def xyz(p: Any) -> list[float]:
         return [p.X(), p.Y(), p.Z()]
 
-    if isinstance(curve, Geom_Line):
+    kind, curve = curve_kind(curve), basis_curve(curve)
+    if kind == "line":
         return np.array([xyz(curve.Value(first)), xyz(curve.Value(last))])
-    if isinstance(curve, (Geom_BezierCurve, Geom_BSplineCurve)):
+    if kind in ("bezier", "bspline"):
         return np.array([xyz(curve.Pole(i)) for i in range(1, curve.NbPoles() + 1)])
-    if isinstance(curve, (Geom_Circle, Geom_Ellipse)):
+    if kind in ("circle", "ellipse"):
         ax = curve.Position()
         c = np.array(xyz(ax.Location()))
         x, y = np.array(xyz(ax.XDirection())), np.array(xyz(ax.YDirection()))
-        ra = curve.Radius() if isinstance(curve, Geom_Circle) else curve.MajorRadius()
-        rb = curve.Radius() if isinstance(curve, Geom_Circle) else curve.MinorRadius()
+        ra = curve.Radius() if kind == "circle" else curve.MajorRadius()
+        rb = curve.Radius() if kind == "circle" else curve.MinorRadius()
         return np.array([c + sx * ra * x + sy * rb * y for sx in (-1, 1) for sy in (-1, 1)])
     return None
 
@@ -204,9 +149,8 @@ def _edge_data(edge: Any) -> _EdgeData:
     from OCP.Geom import Geom_TrimmedCurve
     from OCP.GeomConvert import GeomConvert
 
+    edge = edge_with_3d_curve(edge)  # an edge known only on surfaces gets OCCT's approximated 3D curve
     curve = BRep_Tool.Curve_s(edge, 0.0, 0.0)
-    if curve is None:
-        raise ShapeError("expected an edge with a 3D curve, received an edge without one (degenerate?)")
     first, last = BRep_Tool.Range_s(edge)
     if not (math.isfinite(first) and math.isfinite(last)) or last <= first:
         raise ShapeError(f"expected a bounded edge parameter range, received ({first}, {last})")
@@ -411,11 +355,9 @@ def _route_section(da: _EdgeData, db: _EdgeData, tol: float) -> list[_Raw]:
     from OCP.BRepAlgoAPI import BRepAlgoAPI_Section
     from OCP.TopAbs import TopAbs_EDGE, TopAbs_VERTEX
     from OCP.TopExp import TopExp_Explorer
-    from OCP.TopoDS import TopoDS
-    from OCP.TopTools import TopTools_ListOfShape
 
     section = BRepAlgoAPI_Section()
-    args, tools = TopTools_ListOfShape(), TopTools_ListOfShape()
+    args, tools = ListOfShape(), ListOfShape()
     args.Append(da.edge)
     tools.Append(db.edge)
     section.SetArguments(args)
@@ -429,7 +371,7 @@ def _route_section(da: _EdgeData, db: _EdgeData, tol: float) -> list[_Raw]:
     covered: list[tuple[float, float]] = []
     ex = TopExp_Explorer(result, TopAbs_EDGE)
     while ex.More():
-        e = TopoDS.Edge_s(ex.Current())
+        e = downcast_edge(ex.Current())
         f, l_ = BRep_Tool.Range_s(e)
         c = BRep_Tool.Curve_s(e, 0.0, 0.0)
         p0, p1 = c.Value(f), c.Value(l_)
@@ -442,7 +384,7 @@ def _route_section(da: _EdgeData, db: _EdgeData, tol: float) -> list[_Raw]:
         ex.Next()
     ex = TopExp_Explorer(result, TopAbs_VERTEX, TopAbs_EDGE)
     while ex.More():
-        v = TopoDS.Vertex_s(ex.Current())
+        v = downcast_vertex(ex.Current())
         p = BRep_Tool.Pnt_s(v)
         t, u = _project_param(da, p), _project_param(db, p)
         if not any(lo - 1e-12 <= t <= hi + 1e-12 for lo, hi in covered):
@@ -471,13 +413,12 @@ def _shared_vertex_points(ea: Any, eb: Any) -> list[tuple[float, float, float]]:
     from OCP.BRep import BRep_Tool
     from OCP.TopAbs import TopAbs_VERTEX
     from OCP.TopExp import TopExp_Explorer
-    from OCP.TopoDS import TopoDS
 
     def verts(e: Any) -> list[Any]:
         ex = TopExp_Explorer(e, TopAbs_VERTEX)
         vs = []
         while ex.More():
-            vs.append(TopoDS.Vertex_s(ex.Current()))
+            vs.append(downcast_vertex(ex.Current()))
             ex.Next()
         return vs
 
@@ -585,28 +526,21 @@ def occt_intersections(
     >>> [(r.route, round(r.point[2], 9)) for r in occt_intersections(a, b, route="IntTools_EdgeEdge")]
     [('IntTools_EdgeEdge', 0.5)]
     """
-    from ..errors import ToleranceError
-
     if route not in ROUTES:
         raise InvalidInputError(f"expected route in {ROUTES}, received {route!r}")
+    given_tol = None if tol is None else check_tol(tol)
     flavour_a = flavour_of(a)
-    edges_a = unique_edges(a)
-    if not edges_a:
-        raise ShapeError(f"expected a shape with edges, received a {type(a).__name__} with no edges")
+    indexed_a, _ = usable_edges(a, "a")  # degenerated edges skipped, unbounded ones refused
     if b is None:
-        edges_b, flavour_b = edges_a, flavour_a
+        indexed_b, flavour_b = indexed_a, flavour_a
     else:
         flavour_b = flavour_of(b)
-        edges_b = unique_edges(b)
-        if not edges_b:
-            raise ShapeError(f"expected a shape with edges, received a {type(b).__name__} with no edges")
-    if tol is None:
-        tol = default_occt_tolerance(*edges_a, *edges_b)
-    if not (isinstance(tol, (int, float)) and math.isfinite(tol) and tol > 0):
-        raise ToleranceError(f"expected a finite positive tolerance, received {tol!r}")
-    tol = float(tol)
-    data_a = [_edge_data(e) for e in edges_a]
-    data_b = data_a if b is None else [_edge_data(e) for e in edges_b]
+        indexed_b, _ = usable_edges(b, "b")
+    if given_tol is None:
+        given_tol = default_occt_tolerance(*(e for _, e in indexed_a), *(e for _, e in indexed_b))
+    tol = given_tol
+    data_a = [_edge_data(e) for _, e in indexed_a]
+    data_b = data_a if b is None else [_edge_data(e) for _, e in indexed_b]
     boxes_a = [_bbox(d, tol) for d in data_a]
     boxes_b = boxes_a if b is None else [_bbox(d, tol) for d in data_b]
 
@@ -623,9 +557,11 @@ def occt_intersections(
                     continue
                 name, raw = _pair(da, db, tol, route)
             skip = _shared_vertex_points(da.edge, db.edge) if b is None and i != j else []
+            index_a, index_b = indexed_a[i][0], indexed_b[j][0]
             results.extend(
                 _make_results(
-                    raw, name, i, j, da, db, flavour_a, flavour_b, tol, skip, self_edge=i == j and b is None
+                    raw, name, index_a, index_b, da, db, flavour_a, flavour_b, tol, skip,
+                    self_edge=i == j and b is None,
                 )
             )
     results.sort(key=lambda r: (r.index_a, r.index_b, r.t if isinstance(r, EdgeIntersection) else r.t[0]))
@@ -646,7 +582,7 @@ def _make_results(
     *,
     self_edge: bool,
 ) -> list[EdgeResult]:
-    na, nb = _native_edge(da.edge, flavour_a), _native_edge(db.edge, flavour_b)
+    na, nb = wrap_edge(da.edge, flavour_a), wrap_edge(db.edge, flavour_b)
     out: list[EdgeResult] = []
     seen: list[tuple[float, float, float]] = []
     ptol = 1e-9 * max(1.0, abs(da.last - da.first))
@@ -685,4 +621,4 @@ def _trimmed(data: _EdgeData, t0: float, t1: float, flavour: str) -> Any:
         edge = BRepBuilderAPI_MakeEdge(data.curve, t0, t1).Edge()
     except Exception:  # noqa: BLE001 - degenerate range
         return None
-    return _native_edge(edge, flavour)
+    return wrap_edge(edge, flavour)

@@ -39,51 +39,35 @@ from __future__ import annotations
 
 import functools
 import math
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+from OCP.BRep import BRep_Tool
+from OCP.BRepAdaptor import BRepAdaptor_Curve
+from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeVertex
+from OCP.Geom import (
+    Geom_BezierCurve,
+)
+from OCP.Geom2d import Geom2d_BezierCurve
+from OCP.GeomAbs import GeomAbs_Shape
+from OCP.GeomConvert import GeomConvert_ApproxCurve, GeomConvert_BSplineCurveToBezierCurve
+from OCP.gp import gp_Pnt, gp_Pnt2d
+from OCP.TopLoc import TopLoc_Location
+from OCP.TopoDS import TopoDS_Edge, TopoDS_Vertex
 
 from ..curves import RationalBezier
 from ..errors import (
-    AdapterUnavailableError,
     DegenerateCurveError,
     InputTypeError,
     InvalidInputError,
     OcctError,
     UnsupportedCurveError,
 )
-
-try:
-    from OCP.BRep import BRep_Builder, BRep_Tool
-    from OCP.BRepAdaptor import BRepAdaptor_Curve
-    from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeVertex
-    from OCP.Geom import (
-        Geom_BezierCurve,
-        Geom_BSplineCurve,
-        Geom_Circle,
-        Geom_Ellipse,
-        Geom_Hyperbola,
-        Geom_Line,
-        Geom_Parabola,
-        Geom_TrimmedCurve,
-    )
-    from OCP.Geom2d import Geom2d_BezierCurve
-    from OCP.GeomAbs import GeomAbs_Shape
-    from OCP.GeomConvert import GeomConvert_ApproxCurve, GeomConvert_BSplineCurveToBezierCurve
-    from OCP.gp import gp_Pnt, gp_Pnt2d
-    from OCP.TColgp import TColgp_Array1OfPnt, TColgp_Array1OfPnt2d
-    from OCP.TColStd import TColStd_Array1OfReal
-    from OCP.TopAbs import TopAbs_EDGE
-    from OCP.TopExp import TopExp
-    from OCP.TopLoc import TopLoc_Location
-    from OCP.TopoDS import TopoDS, TopoDS_Compound, TopoDS_Edge, TopoDS_Shape, TopoDS_Vertex
-    from OCP.TopTools import TopTools_IndexedMapOfShape
-except ImportError as exc:  # pragma: no cover - exercised only without the CAD stack
-    raise AdapterUnavailableError(
-        'relief_cad.cad needs OCP (cadquery-ocp); install it with: pip install "relief-cad[cad]"'
-    ) from exc
+from ._compat import Array1OfPnt, Array1OfPnt2d, Array1OfReal, downcast_edge
+from .curvetypes import basis_curve, curve_kind
+from .topology import as_edge, check_bounded, edges_of, make_compound, unwrap
 
 __all__ = [
     "APPROXIMATION_TOLERANCE",
@@ -93,6 +77,7 @@ __all__ = [
     "edges_of",
     "edge_tolerance",
     "edge_value",
+    "edge_with_3d_curve",
     "from_geom_bezier",
     "make_compound",
     "make_vertex",
@@ -292,91 +277,6 @@ def _make_curve(h: np.ndarray) -> RationalBezier:
 
 
 # --------------------------------------------------------------------------- shapes in
-def unwrap(obj: Any) -> TopoDS_Shape:
-    """Return the raw ``TopoDS_Shape`` of a build123d / CadQuery shape (or the shape itself).
-
-    Lists and tuples of shapes become one compound; a CadQuery ``Workplane``
-    contributes the shapes on its stack.
-
-    Raises
-    ------
-    InputTypeError
-        If ``obj`` is not a shape (or a sequence of shapes), or is a null shape.
-
-    Examples
-    --------
-    >>> unwrap(42)
-    Traceback (most recent call last):
-    ...
-    relief_cad.errors.InputTypeError: expected a TopoDS_Shape, a build123d or CadQuery shape, ...
-    """
-    wrapped = None if isinstance(obj, TopoDS_Shape) else getattr(obj, "wrapped", None)
-    if isinstance(obj, TopoDS_Shape):
-        shape = obj
-    elif isinstance(wrapped, TopoDS_Shape):
-        shape = wrapped
-    elif hasattr(obj, "vals") and callable(obj.vals) and type(obj).__name__ == "Workplane":
-        shape = make_compound([unwrap(v) for v in obj.vals() if hasattr(v, "wrapped")])
-    elif isinstance(obj, (list, tuple)):
-        shape = make_compound([unwrap(v) for v in obj])
-    else:
-        raise InputTypeError(
-            "expected a TopoDS_Shape, a build123d or CadQuery shape, or a list of them; "
-            f"received {type(obj).__name__}"
-        )
-    if shape.IsNull():
-        raise InputTypeError("expected a non-null shape; received a null TopoDS_Shape")
-    return shape
-
-
-def make_compound(shapes: Iterable[TopoDS_Shape]) -> TopoDS_Compound:
-    """Return a compound holding ``shapes`` (raw OCP shapes).
-
-    Examples
-    --------
-    >>> make_compound([]).NbChildren()
-    0
-    """
-    builder = BRep_Builder()
-    comp = TopoDS_Compound()
-    builder.MakeCompound(comp)
-    for s in shapes:
-        builder.Add(comp, s)
-    return comp
-
-
-def edges_of(shape: Any) -> list[TopoDS_Edge]:
-    """Return the unique edges of a shape, in ``TopExp_Explorer`` order.
-
-    Repeated occurrences of one edge (``IsSame``: same TShape and location,
-    any orientation, e.g. a seam or an edge shared by two faces) appear once, at
-    their first position. Degenerated edges (poles of spheres...) are kept; the
-    intersection functions skip them.
-
-    Parameters
-    ----------
-    shape : TopoDS_Shape or build123d / CadQuery shape
-        Any shape; an edge gives a one-element list.
-
-    Returns
-    -------
-    list of TopoDS_Edge
-
-    Examples
-    --------
-    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakePolygon
-    >>> poly = BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0), gp_Pnt(1, 1, 0), True)
-    >>> len(edges_of(poly.Wire())), len(edges_of(make_compound([])))
-    (3, 0)
-    """
-    raw = unwrap(shape)
-    if isinstance(raw, TopoDS_Edge):
-        return [raw]
-    emap = TopTools_IndexedMapOfShape()
-    TopExp.MapShapes_s(raw, TopAbs_EDGE, emap)
-    return [TopoDS.Edge_s(emap.FindKey(i)) for i in range(1, emap.Extent() + 1)]
-
-
 def edge_tolerance(edge: Any) -> float:
     """Return OCCT's tolerance of an edge (``BRep_Tool.Tolerance``, model units).
 
@@ -385,25 +285,7 @@ def edge_tolerance(edge: Any) -> float:
     >>> edge_tolerance(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0)).Edge())
     1e-07
     """
-    return float(BRep_Tool.Tolerance_s(_as_edge(edge)))
-
-
-def _as_edge(edge: Any) -> TopoDS_Edge:
-    raw = edge if isinstance(edge, TopoDS_Shape) else getattr(edge, "wrapped", None)
-    if not isinstance(raw, TopoDS_Shape):
-        raise InputTypeError(
-            f"expected an edge (TopoDS_Edge or a build123d / CadQuery Edge); received {type(edge).__name__}"
-        )
-    if raw.IsNull():
-        raise InputTypeError("expected an edge; received a null shape")
-    if not isinstance(raw, TopoDS_Edge):
-        if raw.ShapeType() == TopAbs_EDGE:
-            return TopoDS.Edge_s(raw)
-        raise InputTypeError(
-            f"expected an edge; received a {raw.ShapeType().name.replace('TopAbs_', '').lower()} shape "
-            "(use edges_of() or the intersection functions for wires, faces and solids)"
-        )
-    return raw
+    return float(BRep_Tool.Tolerance_s(as_edge(edge)))
 
 
 # --------------------------------------------------------------------------- conversion
@@ -462,7 +344,7 @@ def _quadratic_spans(
         fx, fy, fs = math.cosh, math.sinh, math.tanh
         max_span, mapping = MAX_HYPERBOLA_SPAN, "hyperbolic"
     else:
-        if isinstance(curve, Geom_Circle):
+        if curve_kind(curve) == "circle":
             a = b = curve.Radius()
         else:
             a, b = curve.MajorRadius(), curve.MinorRadius()
@@ -564,7 +446,7 @@ def _bspline_segments(curve: Any, first: float, last: float, m: np.ndarray | Non
     except Exception as exc:  # noqa: BLE001 - OCCT raises Standard_Failure subclasses
         raise OcctError(f"GeomConvert_BSplineCurveToBezierCurve failed on [{first}, {last}]: {exc}") from exc
     n = conv.NbArcs()
-    knots = TColStd_Array1OfReal(1, n + 1)
+    knots = Array1OfReal(1, n + 1)
     conv.Knots(knots)
     ks = [knots.Value(i) for i in range(1, n + 2)]
     ks[0] = first
@@ -639,14 +521,12 @@ def edge_segments(
     ...
     relief_cad.errors.InputTypeError: expected an edge; received a compound shape ...
     """
-    e = _as_edge(edge)
+    e = as_edge(edge)
     if BRep_Tool.Degenerated_s(e):
         raise DegenerateCurveError("expected an edge with a curve; received a degenerated edge (a point)")
     loc = TopLoc_Location()
     curve = BRep_Tool.Curve_s(e, loc, 0.0, 0.0)
-    first, last = BRep_Tool.Range_s(e)
-    if not (math.isfinite(first) and math.isfinite(last)):
-        raise InvalidInputError(f"expected a bounded edge; received the parameter range [{first}, {last}]")
+    first, last = check_bounded(e)
     if not last > first:
         raise DegenerateCurveError(
             f"expected an edge with a parameter range t0 < t1; received [{first}, {last}] (zero length)"
@@ -664,20 +544,18 @@ def edge_segments(
 def _curve_segments(
     curve: Any, first: float, last: float, m: np.ndarray | None, approximate: bool, tol: float
 ) -> list[Segment]:
-    while isinstance(curve, Geom_TrimmedCurve):
-        curve = curve.BasisCurve()
-    if isinstance(curve, Geom_Line):
+    kind = curve_kind(curve)
+    curve = basis_curve(curve)
+    if kind == "line":
         return _line_segment(curve, first, last, m)
-    if isinstance(curve, (Geom_Circle, Geom_Ellipse)):
-        return _quadratic_spans(curve, first, last, m, hyperbolic=False)
-    if isinstance(curve, Geom_BSplineCurve):
+    if kind in ("circle", "ellipse", "hyperbola"):
+        return _quadratic_spans(curve, first, last, m, hyperbolic=kind == "hyperbola")
+    if kind == "bspline":
         return _check_length(_bspline_segments(curve, first, last, m))
-    if isinstance(curve, Geom_BezierCurve):
+    if kind == "bezier":
         return _check_length(_bezier_segment(curve, first, last, m))
-    if isinstance(curve, Geom_Parabola):
+    if kind == "parabola":
         return _parabola_segment(curve, first, last, m)
-    if isinstance(curve, Geom_Hyperbola):
-        return _quadratic_spans(curve, first, last, m, hyperbolic=True)
     name = type(curve).__name__
     if not approximate:
         raise UnsupportedCurveError(
@@ -701,6 +579,41 @@ def _check_length(segs: list[Segment]) -> list[Segment]:
     )
 
 
+def edge_with_3d_curve(edge: Any, tol: float = APPROXIMATION_TOLERANCE) -> TopoDS_Edge:
+    """Return the edge itself, or for an edge known only by curves on surfaces a new edge on a 3D curve.
+
+    The new edge lies on OCCT's B-spline approximation (``GeomConvert_ApproxCurve`` of the
+    edge's ``BRepAdaptor_Curve``, within ``tol`` model units) over the same parameter
+    range, so parameters keep their meaning.
+
+    Examples
+    --------
+    >>> from OCP.Geom import Geom_Plane
+    >>> from OCP.Geom2d import Geom2d_Line
+    >>> from OCP.gp import gp_Dir2d, gp_Pln
+    >>> line2d = Geom2d_Line(gp_Pnt2d(0, 0), gp_Dir2d(1, 0))
+    >>> e = BRepBuilderAPI_MakeEdge(line2d, Geom_Plane(gp_Pln()), 0.0, 2.0).Edge()
+    >>> BRep_Tool.Curve_s(e, 0.0, 0.0) is None, BRep_Tool.Range_s(edge_with_3d_curve(e))
+    (True, (0.0, 2.0))
+    """
+    e = as_edge(edge)
+    if BRep_Tool.Curve_s(e, 0.0, 0.0) is not None:
+        return e
+    first, last = check_bounded(e)
+    try:
+        approx = GeomConvert_ApproxCurve(BRepAdaptor_Curve(e), tol, GeomAbs_Shape.GeomAbs_C2, 1000, 14)
+    except Exception as exc:  # noqa: BLE001 - OCCT raises Standard_Failure subclasses
+        raise OcctError(f"GeomConvert_ApproxCurve failed on an edge without a 3D curve: {exc}") from exc
+    if not approx.HasResult():
+        raise UnsupportedCurveError(
+            "OCCT could not approximate the 3D curve of an edge known only on surfaces"
+        )
+    maker = BRepBuilderAPI_MakeEdge(approx.Curve(), first, last)
+    if not maker.IsDone():
+        raise OcctError(f"BRepBuilderAPI_MakeEdge failed on [{first}, {last}] (error {maker.Error()})")
+    return maker.Edge()
+
+
 def edge_value(edge: Any, t: float) -> tuple[float, float, float]:
     """Return the point of an edge at its own parameter ``t`` (``BRepAdaptor_Curve``, global coordinates).
 
@@ -709,7 +622,7 @@ def edge_value(edge: Any, t: float) -> tuple[float, float, float]:
     >>> edge_value(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(2, 0, 0)).Edge(), 0.5)
     (0.5, 0.0, 0.0)
     """
-    return BRepAdaptor_Curve(_as_edge(edge)).Value(float(t)).Coord()  # type: ignore[no-any-return]
+    return BRepAdaptor_Curve(as_edge(edge)).Value(float(t)).Coord()  # type: ignore[no-any-return]
 
 
 # --------------------------------------------------------------------------- planar frame
@@ -781,7 +694,7 @@ def trim_edge(edge: Any, t0: float, t1: float) -> TopoDS_Edge:
     >>> BRep_Tool.Range_s(trim_edge(e, 1.0, 3.0))
     (1.0, 3.0)
     """
-    e = _as_edge(edge)
+    e = as_edge(edge)
     lo, hi = (float(t0), float(t1)) if t0 <= t1 else (float(t1), float(t0))
     if lo == hi:
         raise DegenerateCurveError(f"expected t0 != t1 to trim an edge; received t0 = t1 = {lo}")
@@ -794,8 +707,8 @@ def trim_edge(edge: Any, t0: float, t1: float) -> TopoDS_Edge:
         raise OcctError(f"BRepBuilderAPI_MakeEdge failed on [{lo}, {hi}] (error {maker.Error()})")
     new = maker.Edge()
     if not loc.IsIdentity():
-        new = TopoDS.Edge_s(new.Located(loc))
-    return TopoDS.Edge_s(new.Oriented(e.Orientation()))
+        new = downcast_edge(new.Located(loc))
+    return downcast_edge(new.Oriented(e.Orientation()))
 
 
 def to_geom_bezier(curve: RationalBezier) -> Geom_BezierCurve:
@@ -814,7 +727,7 @@ def to_geom_bezier(curve: RationalBezier) -> Geom_BezierCurve:
     """
     _check_degree(curve)
     pts = curve.control_points
-    arr = TColgp_Array1OfPnt(1, len(pts))
+    arr = Array1OfPnt(1, len(pts))
     for i, p in enumerate(pts):
         arr.SetValue(i + 1, gp_Pnt(float(p[0]), float(p[1]), float(p[2]) if curve.dim == 3 else 0.0))
     if curve.is_polynomial:
@@ -839,7 +752,7 @@ def to_geom2d_bezier(curve: RationalBezier) -> Geom2d_BezierCurve:
         raise InvalidInputError(f"expected a planar curve (dim 2) for Geom2d; received dim {curve.dim}")
     _check_degree(curve)
     pts = curve.control_points
-    arr = TColgp_Array1OfPnt2d(1, len(pts))
+    arr = Array1OfPnt2d(1, len(pts))
     for i, p in enumerate(pts):
         arr.SetValue(i + 1, gp_Pnt2d(float(p[0]), float(p[1])))
     if curve.is_polynomial:
@@ -854,8 +767,8 @@ def _check_degree(curve: RationalBezier) -> None:
         )
 
 
-def _weights_array(curve: RationalBezier) -> TColStd_Array1OfReal:
-    w = TColStd_Array1OfReal(1, curve.degree + 1)
+def _weights_array(curve: RationalBezier) -> Array1OfReal:
+    w = Array1OfReal(1, curve.degree + 1)
     for i, wi in enumerate(curve.weights):
         w.SetValue(i + 1, float(wi))
     return w

@@ -9,7 +9,6 @@ from __future__ import annotations
 import math
 
 import build123d as bd
-import cadquery as cq
 import numpy as np
 import pytest
 from OCP.BRep import BRep_Tool
@@ -19,18 +18,17 @@ from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakePolyg
 from OCP.GCPnts import GCPnts_AbscissaPoint
 from OCP.Geom import Geom_BezierCurve, Geom_BSplineCurve
 from OCP.gp import gp_Ax1, gp_Ax2, gp_Circ, gp_Dir, gp_Elips, gp_Pnt, gp_Trsf, gp_Vec
-from OCP.TColgp import TColgp_Array1OfPnt
-from OCP.TColStd import TColStd_Array1OfInteger, TColStd_Array1OfReal
 from OCP.TopLoc import TopLoc_Location
-from OCP.TopoDS import TopoDS, TopoDS_Edge, TopoDS_Vertex
-from OCP.TopTools import TopTools_ListOfShape
+from OCP.TopoDS import TopoDS_Edge, TopoDS_Vertex
 
 from relief_cad.cad import api, ocp
 from relief_cad.cad import build123d as rbd
-from relief_cad.cad import cadquery as rcq
+from relief_cad.cad._compat import Array1OfInteger, Array1OfPnt, Array1OfReal, ListOfShape, downcast_edge
+from relief_cad.cad.compare import compare
 from relief_cad.cad.occt import occt_intersections
 from relief_cad.cad.results import EdgeIntersection, EdgeOverlap
 from relief_cad.errors import InputTypeError, InvalidInputError, ReliefCadError, ToleranceError
+from tests._env import cq, needs_cadquery
 
 TILTED = gp_Ax2(gp_Pnt(1.5, -2.0, 3.25), gp_Dir(1, 1, 1), gp_Dir(1, -1, 0))
 XY = gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1), gp_Dir(1, 0, 0))
@@ -55,7 +53,7 @@ def located(edge: TopoDS_Edge) -> TopoDS_Edge:
     trsf.SetRotation(gp_Ax1(gp_Pnt(1, 2, 3), gp_Dir(0.3, -0.4, 0.8)), 0.7)
     move = gp_Trsf()
     move.SetTranslation(gp_Vec(5.0, -3.0, 2.0))
-    return TopoDS.Edge_s(edge.Moved(TopLoc_Location(move.Multiplied(trsf))))
+    return downcast_edge(edge.Moved(TopLoc_Location(move.Multiplied(trsf))))
 
 
 def value(edge: object, t: float) -> np.ndarray:
@@ -121,7 +119,7 @@ def test_circle_line_angles(frame, reverse):
     ax = FRAMES[frame]
     c = circle(ax, 2.0)
     if reverse:
-        c = TopoDS.Edge_s(c.Reversed())
+        c = downcast_edge(c.Reversed())
     line = seg(ax, (-3, 1), (3, 1))
     hits = api.intersections(c, line)
     # y = 1 on the circle of radius 2: angles pi/6 and 5pi/6 (the edge's own parameters)
@@ -227,18 +225,18 @@ def test_shared_vertex_reported_once():
     assert math.isclose(hit.t, math.sqrt(2), rel_tol=1e-15) and hit.u == 0.0
 
 
-def _poles(pts: list[tuple[float, float]]) -> TColgp_Array1OfPnt:
-    arr = TColgp_Array1OfPnt(1, len(pts))
+def _poles(pts: list[tuple[float, float]]) -> Array1OfPnt:
+    arr = Array1OfPnt(1, len(pts))
     for i, p in enumerate(pts):
         arr.SetValue(i + 1, gp_Pnt(p[0], p[1], 0.0))
     return arr
 
 
 def test_crossing_at_bspline_knot_reported_once():
-    knots = TColStd_Array1OfReal(1, 3)
+    knots = Array1OfReal(1, 3)
     for i, k in enumerate((0.0, 1.0, 2.0)):
         knots.SetValue(i + 1, k)
-    mults = TColStd_Array1OfInteger(1, 3)
+    mults = Array1OfInteger(1, 3)
     for i, m in enumerate((4, 1, 4)):
         mults.SetValue(i + 1, m)
     g = Geom_BSplineCurve(_poles([(0, 0), (1, 2), (2, -1), (3, 2), (4, 0)]), knots, mults, 3)
@@ -308,6 +306,12 @@ def test_simple_shapes_have_no_self_intersections(shape):
 def test_flavours_of_vertices():
     a_b, b_b = bd.Edge.make_line((0, 0), (2, 2)), bd.Edge.make_line((0, 2), (2, 0))
     assert isinstance(api.intersect(a_b, b_b)[0], bd.Vertex)
+    [raw] = api.intersect(a_b.wrapped, b_b.wrapped)
+    assert isinstance(raw, TopoDS_Vertex)
+
+
+@needs_cadquery
+def test_flavours_of_cadquery_vertices():
     a_c = cq.Edge.makeLine(cq.Vector(0, 0, 0), cq.Vector(2, 2, 0))
     b_c = cq.Edge.makeLine(cq.Vector(0, 2, 0), cq.Vector(2, 0, 0))
     [v] = api.intersect(a_c, b_c)
@@ -332,7 +336,10 @@ def test_build123d_contexts_and_algebra():
     assert len(pieces) == 3 and isinstance(pieces, bd.ShapeList)
 
 
+@needs_cadquery
 def test_cadquery_plugin_invoke_and_register():
+    from relief_cad.cad import cadquery as rcq
+
     line = cq.Workplane("XY").moveTo(-2, 0.5).lineTo(2, 0.5)
     circ = cq.Workplane("XY").circle(1.0)
     wp = line.invoke(rcq.intersection_points(circ))
@@ -361,7 +368,7 @@ def test_cadquery_plugin_invoke_and_register():
 # ----------------------------------------------------------------------------- split vs OCCT's splitter
 def _occt_split(a: TopoDS_Edge, b: TopoDS_Edge) -> list[TopoDS_Edge]:
     splitter = BRepAlgoAPI_Splitter()
-    args, tools = TopTools_ListOfShape(), TopTools_ListOfShape()
+    args, tools = ListOfShape(), ListOfShape()
     args.Append(a)
     tools.Append(b)
     splitter.SetArguments(args)
@@ -416,10 +423,27 @@ def test_bad_shapes(args, error):
     assert isinstance(info.value, ReliefCadError)
 
 
-@pytest.mark.parametrize("tol", [0.0, -1.0, float("nan"), "x"])
-def test_bad_tolerance(tol):
-    with pytest.raises(ToleranceError):
-        api.intersections(seg(XY, (0, 0), (1, 0)), seg(XY, (0, 1), (1, 0)), tol=tol)
+CAD_FUNCTIONS = {
+    "intersections": api.intersections,
+    "intersect": api.intersect,
+    "split": api.split,
+    "occt_intersections": occt_intersections,
+    "compare": compare,
+}
+
+
+@pytest.mark.parametrize("function", list(CAD_FUNCTIONS))
+@pytest.mark.parametrize("tol", [0.0, -1.0, float("nan"), float("inf"), 10**400])
+def test_bad_tolerance_value(function, tol):
+    with pytest.raises(ToleranceError, match="finite distance > 0"):
+        CAD_FUNCTIONS[function](seg(XY, (0, 0), (1, 0)), seg(XY, (0, 1), (1, 0)), tol=tol)
+
+
+@pytest.mark.parametrize("function", list(CAD_FUNCTIONS))
+@pytest.mark.parametrize("tol", ["abc", [1e-6], True, 1j])
+def test_bad_tolerance_type(function, tol):
+    with pytest.raises(InputTypeError, match=f"not {type(tol).__name__}"):
+        CAD_FUNCTIONS[function](seg(XY, (0, 0), (1, 0)), seg(XY, (0, 1), (1, 0)), tol=tol)
 
 
 # ----------------------------------------------------------------------------- more contacts
@@ -465,12 +489,8 @@ def test_near_miss_within_tolerance_is_tangent_and_outside_is_nothing():
     assert api.intersections(c, seg(XY, (-2, 1.001), (2, 1.001)), tol=1e-7) == []
 
 
-@pytest.mark.parametrize(
-    ("blocked", "module"),
-    [("build123d", "relief_cad.cad.build123d"), ("cadquery", "relief_cad.cad.cadquery"),
-     ("OCP", "relief_cad.cad")],
-)
-def test_missing_cad_package_gives_install_hint(blocked, module):
+def _import_with_blocked(blocked: str, module: str) -> str:
+    """Import ``module`` in a fresh interpreter where ``blocked`` cannot be imported; return the error."""
     import subprocess
     import sys
 
@@ -482,8 +502,48 @@ def test_missing_cad_package_gives_install_hint(blocked, module):
         "except AdapterUnavailableError as exc:\n"
         "    print('HINT', exc)\n"
     )
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
-    assert 'pip install "relief-cad[cad]"' in out
+    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+
+
+@pytest.mark.parametrize(
+    ("blocked", "module", "extra"),
+    [("build123d", "relief_cad.cad.build123d", "relief-cad[build123d]"),
+     ("cadquery", "relief_cad.cad.cadquery", "relief-cad[cadquery]")],
+)
+def test_missing_cad_package_gives_install_hint(blocked, module, extra):
+    out = _import_with_blocked(blocked, module)
+    assert out.startswith("HINT") and f'pip install "{extra}"' in out
+
+
+def test_missing_ocp_is_told_apart_from_an_unsupported_one():
+    out = _import_with_blocked("OCP", "relief_cad.cad")
+    assert "none is installed" in out and "OCP 7.9, 8.0" in out
+    assert "does not support" not in out
+
+
+@pytest.mark.parametrize("version", ["7.7.2", "8.1.0.0", "6.9.1"])
+def test_unsupported_ocp_version_is_named(version):
+    from relief_cad.cad._compat import check_ocp_version
+    from relief_cad.errors import AdapterUnavailableError
+
+    with pytest.raises(AdapterUnavailableError, match=rf"OCP {version[:3]} found \({version}\).*supported: OCP 7.9, 8.0"):
+        check_ocp_version(version)
+    with pytest.raises(ImportError):  # AdapterUnavailableError is an ImportError too
+        check_ocp_version(version)
+
+
+def test_installed_ocp_is_supported_and_reported():
+    import importlib.metadata
+
+    import OCP
+
+    from relief_cad.cad._compat import SUPPORTED_OCP, check_ocp_version, versions
+
+    assert check_ocp_version(OCP.__version__) in SUPPORTED_OCP
+    v = versions()
+    assert v["ocp"] == OCP.__version__ and OCP.__version__.startswith(v["occt"])
+    assert v["build123d"] == importlib.metadata.version("build123d")
+    assert (v["cadquery"] is None) == (cq is None)
 
 
 def test_planar_curves_keep_parameters_and_distances():

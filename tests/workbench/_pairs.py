@@ -9,7 +9,8 @@ import sympy as sp
 from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
 from OCP.Geom import Geom_BezierCurve
 from OCP.gp import gp_Pnt
-from OCP.TColgp import TColgp_Array1OfPnt
+
+from relief_cad.cad._compat import Array1OfPnt
 
 
 def segment(p, q):
@@ -17,7 +18,7 @@ def segment(p, q):
 
 
 def bezier(points):
-    arr = TColgp_Array1OfPnt(1, len(points))
+    arr = Array1OfPnt(1, len(points))
     for i, p in enumerate(points):
         arr.SetValue(i + 1, gp_Pnt(*(float(c) for c in p)))
     return BRepBuilderAPI_MakeEdge(Geom_BezierCurve(arr)).Edge()

@@ -9,11 +9,12 @@ from OCP.BRepAdaptor import BRepAdaptor_Curve
 from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
 from OCP.gp import gp_Ax1, gp_Ax2, gp_Circ, gp_Dir, gp_Pnt, gp_Trsf, gp_Vec
 from OCP.TopLoc import TopLoc_Location
-from OCP.TopoDS import TopoDS
 
+from relief_cad.cad._compat import downcast_edge
 from relief_cad.cad.occt import occt_intersections
 from relief_cad.cad.results import EdgeIntersection, EdgeOverlap
 from relief_cad.errors import InputTypeError, ShapeError
+from tests._env import needs_cadquery
 
 from ._pairs import bezier, segment
 
@@ -55,8 +56,8 @@ def test_located_and_reversed_edges_keep_their_own_parameters():
     tr2 = gp_Trsf()
     tr2.SetTranslation(gp_Vec(1, 1, 0))
     tr.PreMultiply(tr2)
-    moved = TopoDS.Edge_s(base.Moved(TopLoc_Location(tr)))  # x = 1, y from 1 to 5
-    reversed_edge = TopoDS.Edge_s(segment((0, 3, 0), (4, 3, 0)).Reversed())
+    moved = downcast_edge(base.Moved(TopLoc_Location(tr)))  # x = 1, y from 1 to 5
+    reversed_edge = downcast_edge(segment((0, 3, 0), (4, 3, 0)).Reversed())
     (hit,) = occt_intersections(moved, reversed_edge)
     assert hit.point == pytest.approx((1.0, 3.0, 0.0), abs=1e-12)
     assert hit.t == pytest.approx(2.0, abs=1e-12) and hit.u == pytest.approx(1.0, abs=1e-12)
@@ -106,19 +107,24 @@ def test_bad_input_is_named():
 
     empty = TopoDS_Compound()
     BRep_Builder().MakeCompound(empty)
-    with pytest.raises(ShapeError, match="no edges"):
+    with pytest.raises(ShapeError, match="at least one edge with a curve"):
         occt_intersections(empty)
 
 
-def test_build123d_and_cadquery_inputs_get_their_own_edges_back():
+def test_build123d_inputs_get_their_own_edges_back():
     import build123d as bd
-    import cadquery as cq
 
     arc = bd.Edge.make_circle(2.0)
     line = bd.Edge.make_line((-3, 1), (3, 1))
     res = occt_intersections(arc, line)
     assert len(res) == 2 and all(isinstance(r.edge_a, bd.Edge) and isinstance(r.edge_b, bd.Edge) for r in res)
     assert sorted(r.point[0] for r in res) == pytest.approx([-math.sqrt(3), math.sqrt(3)], abs=1e-9)
+
+
+@needs_cadquery
+def test_cadquery_inputs_get_their_own_edges_back():
+    import cadquery as cq
+
     cq_res = occt_intersections(cq.Edge.makeCircle(2.0), cq.Edge.makeLine(cq.Vector(-3, 1, 0), cq.Vector(3, 1, 0)))
     assert len(cq_res) == 2 and isinstance(cq_res[0].edge_a, cq.Edge)
 
