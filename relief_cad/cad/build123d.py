@@ -113,3 +113,14 @@ def split(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
 
 def _as_list(vertices: Any) -> list[Any]:
     return [v if hasattr(v, "wrapped") else _bd.Vertex(v) for v in vertices]
+
+
+def wrap_faces(faces: list[Any]) -> Any:
+    """Return ``TopoDS_Face`` objects as a build123d ``ShapeList[Face]``.
+
+    Examples
+    --------
+    >>> wrap_faces([])
+    []
+    """
+    return _bd.ShapeList([_bd.Face(f) for f in faces])

@@ -182,3 +182,14 @@ def register(name: str = "intersection_points") -> None:
     method.__doc__ = intersection_points.__doc__
     method._relief_cad_plugin = True  # type: ignore[attr-defined]
     setattr(_cq.Workplane, name, method)
+
+
+def wrap_faces(faces: list[Any]) -> list[Any]:
+    """Return ``TopoDS_Face`` objects as CadQuery ``Face`` objects.
+
+    Examples
+    --------
+    >>> wrap_faces([])
+    []
+    """
+    return [_cq.Face(f) for f in faces]
