@@ -5,7 +5,7 @@ Subcommands::
     corpus      build a corpus file (random families, glyphs, sketches, STEP files)
     compare     relief_cad vs OCCT on every pair of a corpus (parallel, Dask, resumable)
     report      a self-contained HTML report of a compare run
-    bench       the benchmarks (planar, cad, space) as a table and JSON
+    bench       the benchmarks (planar, cad, space, arrange) as a table and JSON
     quickstart  compare + report on the bundled corpus into ./relief_cad_report/
 """
 
@@ -156,8 +156,8 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--max-pictures", type=int, default=200)
     r.set_defaults(func=_cmd_report)
 
-    b = sub.add_parser("bench", help="benchmarks: planar, cad, space (default all)")
-    b.add_argument("names", nargs="*", help="planar, cad, space or all")
+    b = sub.add_parser("bench", help="benchmarks: planar, cad, space, arrange (default all)")
+    b.add_argument("names", nargs="*", help="planar, cad, space, arrange or all")
     b.add_argument("--json", default="bench.json", help="write results here (default bench.json)")
     b.set_defaults(func=_cmd_bench)
 

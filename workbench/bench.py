@@ -24,6 +24,7 @@ BENCHMARKS = {
     "planar": "workbench.bench_planar",
     "cad": "workbench.bench_cad",
     "space": "workbench.bench_space",
+    "arrange": "workbench.bench_arrange",  # issue 13: arrange vs BOPAlgo_Builder
 }
 
 

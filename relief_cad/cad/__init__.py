@@ -25,8 +25,8 @@ with the install hint ``pip install "relief-cad[cad]"``.
 from __future__ import annotations
 
 from .api import intersect, intersections, planar_curves, segments
-from .arrange import arrange, split_both
-from .arrange import split_connected as split  # the pieces share vertices (issue 13)
+from .arrangement import arrange, split_both
+from .arrangement import split_connected as split  # the pieces share vertices (issue 13)
 from .compare import (
     Comparison,
     Disagreement,

@@ -26,9 +26,9 @@ except ImportError as exc:  # pragma: no cover - exercised only without build123
     ) from exc
 
 from . import api
-from .arrange import arrange as _arrange
-from .arrange import split_both as _split_both
-from .arrange import split_connected as _split_connected
+from .arrangement import arrange as _arrange
+from .arrangement import split_both as _split_both
+from .arrangement import split_connected as _split_connected
 from .results import EdgeResult
 
 __all__ = [
@@ -125,7 +125,7 @@ def split(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
 def arrange(shapes: Any, *, tol: float | None = None, faces: bool = False) -> Any:
     """Cut all edges of ``shapes`` at all their intersections: a ``ShapeList[Edge]`` or ``ShapeList[Face]``.
 
-    See :func:`relief_cad.cad.arrange.arrange`. The pieces share vertices, so
+    See :func:`relief_cad.cad.arrangement.arrange`. The pieces share vertices, so
     they make wires and faces directly; inside ``BuildSketch``, ``add(arrange(...,
     faces=True))`` adds the bounded regions.
 
@@ -143,7 +143,7 @@ def arrange(shapes: Any, *, tol: float | None = None, faces: bool = False) -> An
 def split_both(a: Any, b: Any, *, tol: float | None = None) -> tuple[Any, Any]:
     """Cut ``a`` and ``b`` where they meet: two ``ShapeList[Edge]`` sharing vertices and overlap edges.
 
-    See :func:`relief_cad.cad.arrange.split_both`.
+    See :func:`relief_cad.cad.arrangement.split_both`.
 
     Examples
     --------

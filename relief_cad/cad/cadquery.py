@@ -31,9 +31,9 @@ except ImportError as exc:  # pragma: no cover - exercised only without CadQuery
     ) from exc
 
 from . import api
-from .arrange import arrange as _arrange
-from .arrange import split_both as _split_both
-from .arrange import split_connected as _split_connected
+from .arrangement import arrange as _arrange
+from .arrangement import split_both as _split_both
+from .arrangement import split_connected as _split_connected
 from .results import EdgeResult
 
 __all__ = [
@@ -134,7 +134,7 @@ def _native(shapes: Any, kind: Any) -> list[Any]:
 def arrange(shapes: Any, *, tol: float | None = None, faces: bool = False) -> list[Any]:
     """Cut all edges of CadQuery shapes / Workplanes at all their intersections: ``Edge`` or ``Face`` list.
 
-    See :func:`relief_cad.cad.arrange.arrange`.
+    See :func:`relief_cad.cad.arrangement.arrange`.
 
     Examples
     --------
@@ -154,7 +154,7 @@ def arranged(other: Any = None, *, tol: float | None = None, faces: bool = False
     other : Workplane, CadQuery shape or list of them, optional
         More shapes to arrange with the stack's objects.
     tol : float, optional
-        As for :func:`relief_cad.cad.arrange.arrange`.
+        As for :func:`relief_cad.cad.arrangement.arrange`.
     faces : bool, keyword-only
         True: the bounded faces of the arrangement instead of its edges.
 

@@ -58,7 +58,7 @@ try:
     from OCP.TopoDS import TopoDS, TopoDS_Edge, TopoDS_Vertex
     from OCP.TopTools import TopTools_IndexedMapOfShape, TopTools_ListOfShape
 except ImportError as exc:  # pragma: no cover - api above raises first
-    raise ImportError("relief_cad.cad.arrange needs OCP") from exc
+    raise ImportError("relief_cad.cad.arrangement needs OCP") from exc
 
 __all__ = ["arrange", "split_both", "split_connected"]
 
