@@ -97,7 +97,8 @@ def draw(regions: list[tuple[Any, str]], path: Path) -> None:
             continue
         nodes = np.array([tri.Node(i).Coord()[:2] for i in range(1, tri.NbNodes() + 1)])
         tris = [np.array(tri.Triangle(i).Get()) - 1 for i in range(1, tri.NbTriangles() + 1)]
-        ax.add_collection(PolyCollection([nodes[t] for t in tris], facecolors=COLOURS[kind], edgecolors=COLOURS[kind],
+        colour = COLOURS[kind]
+        ax.add_collection(PolyCollection([nodes[t] for t in tris], facecolors=colour, edgecolors=colour,
                                      linewidths=0.3))
         for edge in face.edges():
             pts = np.array([tuple(edge.position_at(s))[:2] for s in np.linspace(0, 1, 30)])

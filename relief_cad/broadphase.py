@@ -159,7 +159,8 @@ def box_pairs_between(lows_a: object, highs_a: object, lows_b: object, highs_b: 
 
     Examples
     --------
-    >>> box_pairs_between([[0.0, 0.0]], [[1.0, 1.0]], [[0.5, 0.5], [5.0, 5.0]], [[2.0, 2.0], [6.0, 6.0]]).tolist()
+    >>> lows_b, highs_b = [[0.5, 0.5], [5.0, 5.0]], [[2.0, 2.0], [6.0, 6.0]]
+    >>> box_pairs_between([[0.0, 0.0]], [[1.0, 1.0]], lows_b, highs_b).tolist()
     [[0, 0]]
     """
     lo_a, hi_a = _boxes(lows_a, highs_a, "set a")
@@ -183,7 +184,9 @@ def _unique_pairs(a: IntArray, b: IntArray) -> IntArray:
     return np.unique(np.stack([a, b], axis=1), axis=0).astype(np.int64)
 
 
-def cluster_points(points: object, tol: float, *, links: Sequence[tuple[int, int]] | IntArray = ()) -> IntArray:
+def cluster_points(
+    points: object, tol: float, *, links: Sequence[tuple[int, int]] | IntArray = ()
+) -> IntArray:
     """Label points so that points closer than ``tol`` (and linked points) share a label.
 
     Clusters are the connected components of the graph "closer than ``tol``"
@@ -230,7 +233,9 @@ def cluster_points(points: object, tol: float, *, links: Sequence[tuple[int, int
         close = close[d <= tol]
     extra = np.asarray(links, dtype=np.int64).reshape(-1, 2)
     if extra.shape[0] and (extra.min() < 0 or extra.max() >= pts.shape[0]):
-        raise ShapeError(f"expected links between point indices 0..{pts.shape[0] - 1}; received {extra.tolist()}")
+        raise ShapeError(
+            f"expected links between point indices 0..{pts.shape[0] - 1}; received {extra.tolist()}"
+        )
     return _components(pts.shape[0], np.vstack([close, extra]))
 
 

@@ -1,4 +1,4 @@
-"""Benchmark of ``arrange``: relief_cad against OCCT's General Fuse (``BOPAlgo_Builder``), same edges, one run.
+"""Benchmark of ``arrange``: relief_cad against OCCT's General Fuse (``BOPAlgo_Builder``), same edges.
 
 Families (each at several sizes, default 50, 500 and 5,000 edges; ``RELIEF_BENCH_ARRANGE_SIZES=50,200``
 overrides):

@@ -448,13 +448,7 @@ def _pair_jobs(
             and la[2] - tol <= hb[2] and lb[2] <= ha[2] + tol
         ]
     else:
-        lo_a, hi_a = np.array(ea.lows), np.array(ea.highs)
-        lo_b, hi_b = np.array(eb.lows), np.array(eb.highs)
-        close = np.all(
-            (lo_a[:, None, :] - tol <= hi_b[None, :, :]) & (lo_b[None, :, :] <= hi_a[:, None, :] + tol),
-            axis=2,
-        )
-        candidates = zip(*np.nonzero(close), strict=True)
+        candidates = box_pairs_between(ea.lows, ea.highs, eb.lows, eb.highs, pad=tol).tolist()
     for ii, jj in candidates:
         i, j = int(ii), int(jj)
         if same and j < i:

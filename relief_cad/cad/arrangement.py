@@ -254,7 +254,8 @@ def _pieces(graph: _Graph) -> tuple[list[list[_Piece]], list[Any], np.ndarray]:
             if twin is None:
                 by_nodes.setdefault(key, []).append(piece)
             else:
-                reverse = twin.nodes != piece.nodes or twin.nodes[0] == twin.nodes[1] and not _same_way(twin, piece)
+                closed = twin.nodes[0] == twin.nodes[1]
+                reverse = twin.nodes != piece.nodes or (closed and not _same_way(twin, piece))
                 shared = TopoDS.Edge_s(twin.edge.Reversed()) if reverse else twin.edge
                 pieces[n] = _Piece(shared, piece.nodes, piece.mid, twin.curve, twin.t)
         out.append(pieces)

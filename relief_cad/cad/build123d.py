@@ -133,7 +133,8 @@ def arrange(shapes: Any, *, tol: float | None = None, faces: bool = False) -> An
     --------
     >>> import build123d as bd
     >>> faces = arrange([bd.Rectangle(2, 2), bd.Circle(1.2)], faces=True)
-    >>> len(faces), round(sum(f.area for f in faces), 6) == round((bd.Rectangle(2, 2) + bd.Circle(1.2)).area, 6)
+    >>> union = bd.Rectangle(2, 2) + bd.Circle(1.2)
+    >>> len(faces), round(sum(f.area for f in faces), 6) == round(union.area, 6)
     (9, True)
     """
     return _as_shapelist(_arrange(shapes, tol=tol, faces=faces),

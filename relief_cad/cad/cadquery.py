@@ -32,7 +32,6 @@ except ImportError as exc:  # pragma: no cover - exercised only without CadQuery
 
 from . import api
 from .arrangement import arrange as _arrange
-from .arrangement import split_both as _split_both
 from .arrangement import split_connected as _split_connected
 from .results import EdgeResult
 
