@@ -32,7 +32,10 @@ every piece. Inputs are never modified.
 
 from __future__ import annotations
 
+import gc
 import math
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -84,6 +87,24 @@ class _Graph:
     tol: float = 0.0
     flavour: str = "ocp"
     frame: np.ndarray | None = None  # the common 2D frame of all edges (see api._common_frame), if any
+
+
+@contextmanager
+def _no_gc_pauses() -> Iterator[None]:
+    """Hold the cyclic garbage collector while an arrangement is built, and restore its state.
+
+    Building one allocates hundreds of thousands of small objects that all stay alive
+    (float lists, OCP handles, results), so every generation-0 collection rescans a growing
+    heap for nothing: measured on 2,000 filleted-sketch edges, 25-30 % of the run. Nothing
+    here makes reference cycles to collect; the collector runs again on exit.
+    """
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
 
 
 # --------------------------------------------------------------------------- cut places
@@ -396,9 +417,10 @@ def arrange(shapes: Any, *, tol: float | None = None, faces: bool = False) -> An
     >>> len(arrange(square))  # nothing to cut: the same four edges, rebuilt
     4
     """
-    graph, _ = _graph(shapes, None, tol)
-    pieces, _, centres = _pieces(graph)
-    edges = _unique(pieces)
+    with _no_gc_pauses():
+        graph, _ = _graph(shapes, None, tol)
+        pieces, _, centres = _pieces(graph)
+        edges = _unique(pieces)
     if not faces:
         return api._wrap_edges(edges, graph.flavour)
     return _wrap_faces(_bounded_faces(edges, _plane(graph, centres)), graph.flavour)
@@ -434,8 +456,9 @@ def split_both(a: Any, b: Any, *, tol: float | None = None) -> tuple[Any, Any]:
     >>> len(pa), len(pb), pa[1].IsSame(pb[0])
     (2, 2, True)
     """
-    graph, offset = _graph(a, b, tol)
-    pieces, _, _ = _pieces(graph)
+    with _no_gc_pauses():
+        graph, offset = _graph(a, b, tol)
+        pieces, _, _ = _pieces(graph)
     sides = (range(offset), range(offset, len(graph.edges)))
     out = tuple(
         api._wrap_edges([_oriented(p.edge, graph.edges[k]) for k in side for p in pieces[k]], graph.flavour)
@@ -478,8 +501,9 @@ def split_connected(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
     """
     if b is not None:
         return split_both(a, b, tol=tol)[0]
-    graph, _ = _graph(a, None, tol)
-    pieces, _, _ = _pieces(graph)
+    with _no_gc_pauses():
+        graph, _ = _graph(a, None, tol)
+        pieces, _, _ = _pieces(graph)
     return api._wrap_edges(
         [_oriented(p.edge, graph.edges[k]) for k, ps in enumerate(pieces) for p in ps], graph.flavour
     )

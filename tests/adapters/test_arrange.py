@@ -269,3 +269,21 @@ def test_bad_input_is_named(call, error, builtin):
         call()
     assert isinstance(info.value, ReliefCadError) and isinstance(info.value, builtin)
     assert "expected" in str(info.value) or "should be" in str(info.value)
+
+
+def test_garbage_collector_state_is_restored():
+    import gc
+
+    a, b = line((0, 0, 0), (2, 2, 0)), line((0, 2, 0), (2, 0, 0))
+    assert gc.isenabled()
+    arrange([a, b])
+    assert gc.isenabled()
+    gc.disable()
+    try:
+        split_both(a, b)
+        assert not gc.isenabled()  # a caller's choice is kept
+    finally:
+        gc.enable()
+    with pytest.raises(InputTypeError):
+        arrange([a, 42])
+    assert gc.isenabled()
