@@ -59,9 +59,13 @@ try:
     from OCP.TopExp import TopExp
     from OCP.TopLoc import TopLoc_Location
     from OCP.TopoDS import TopoDS, TopoDS_Edge, TopoDS_Vertex
-    from OCP.TopTools import TopTools_IndexedMapOfShape, TopTools_ListOfShape
 except ImportError as exc:  # pragma: no cover - api above raises first
     raise ImportError("relief_cad.cad.arrangement needs OCP") from exc
+try:  # OCP 8 moved the NCollection maps and lists to OCP.collections; the compat module names them
+    from ._compat import IndexedMapOfShape as TopTools_IndexedMapOfShape  # type: ignore[import-not-found,unused-ignore]
+    from ._compat import ListOfShape as TopTools_ListOfShape  # type: ignore[import-not-found,unused-ignore]
+except ImportError:  # pragma: no cover - before the compat module (issue 11) lands: OCP 7.9 names
+    from OCP.TopTools import TopTools_IndexedMapOfShape, TopTools_ListOfShape
 
 __all__ = ["arrange", "split_both", "split_connected"]
 
