@@ -351,7 +351,7 @@ def run() -> dict[str, Any]:
     """Run every case: ``{"rows": [...], "growth": [...], "worst_speedup": x, "median_speedup": y}``."""
     from relief_cad.cad.arrangement import arrange
 
-    arrange(_fillets(20) + _glyphs(60))  # warm up: compiled kernels (incl. the self-intersection path), OCCT, fonts
+    arrange(_fillets(20) + _glyphs(60))  # warm up: compiled kernels (self-intersections too), OCCT, fonts
     rows = []
     for name, n, make in cases(_sizes()):
         try:
