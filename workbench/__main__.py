@@ -34,7 +34,7 @@ commands:
   compare     relief_cad vs OCCT on every pair of a corpus, or of STEP files given directly
               (all cores, or a Dask cluster; resumable)
   report      a self-contained HTML report of one or several compare runs
-  bench       the benchmarks (planar, cad, space) as tables and JSON
+  bench       the benchmarks (planar, cad, space, arrange) as tables and JSON
   quickstart  compare + report on the bundled corpus into ./relief_cad_report/
 
 exit status: 0 everything asked for was done; 1 some items or inputs failed (listed);
