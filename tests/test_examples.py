@@ -24,7 +24,7 @@ from tests._env import needs_cadquery
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 SCRIPTS = sorted(p.name for p in EXAMPLES.glob("*.py"))
-CHECKED = {"build123d_sketch.py", "paper_figure.py", "step_intersections.py"}
+CHECKED = {"arrange_text.py", "build123d_sketch.py", "paper_figure.py", "step_intersections.py"}
 
 
 def _run(script: str, *args: str, timeout: float = 240.0) -> str:
@@ -490,3 +490,22 @@ def test_step_intersections_overlapping_boxes(tmp_path: Path) -> None:
     assert seen == {c: 2 for c in corners}
     data = json.loads((out / "comparison.json").read_text(encoding="utf-8"))
     assert data["score"]["agreed"] == 20 and data["disagreements"] == []
+
+
+# --------------------------------------------------------------------------- arrange_text.py (issue 13)
+def test_arrange_text(tmp_path: Path) -> None:
+    import build123d as bd
+
+    out = _run("arrange_text.py", str(tmp_path))
+    _check_png(tmp_path / "arrange_text.png")
+    step = tmp_path / "relief.step"
+    assert step.is_file()
+    solids = bd.import_step(str(step)).solids()
+    regions = re.search(r"regions: (\d+) \(letter: (\d+), band: (\d+), both: (\d+)\)", out)
+    assert regions is not None, out
+    _, letters, bands, both = map(int, regions.groups())
+    assert letters > 0 and bands > 0 and both > 0
+    assert len(solids) == letters + bands + both
+    areas = re.search(r"area of the regions: (\S+); of letters ∪ bands \(OCCT fuse\): (\S+)", out)
+    assert areas is not None, out
+    assert math.isclose(float(areas.group(1)), float(areas.group(2)), rel_tol=1e-5)

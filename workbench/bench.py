@@ -25,6 +25,7 @@ BENCHMARKS = {
     "planar": f"{_PKG}.bench_planar",
     "cad": f"{_PKG}.bench_cad",
     "space": f"{_PKG}.bench_space",
+    "arrange": f"{_PKG}.bench_arrange",  # issue 13: arrange vs BOPAlgo_Builder
 }
 
 

@@ -8,7 +8,9 @@ this one.
 * :func:`segments` -- an edge as exact rational Bézier segments plus parameter maps;
 * :func:`intersect` -- native vertices where edges of shapes meet;
 * :func:`intersections` -- the rich results (:class:`EdgeIntersection`, :class:`EdgeOverlap`);
-* :func:`split` -- edges cut at their intersections, as native edges;
+* :func:`split` -- edges cut at their intersections, as native edges sharing vertices;
+* :func:`split_both` -- both shapes cut where they meet, sharing vertices and overlap edges;
+* :func:`arrange` -- all edges cut at all intersections, connected; or the faces they bound;
 * :func:`occt_intersections` -- OCCT's own answer on the same shapes, in the same result types;
 * :func:`compare` -- relief_cad against OCCT, every disagreement judged by a 50-digit arbiter.
 
@@ -24,7 +26,9 @@ missing OCP and an unsupported OCP release get different messages (see :mod:`._c
 from __future__ import annotations
 
 from . import _compat  # noqa: F401  first: refuses a missing or unsupported OCP with a clear error
-from .api import intersect, intersections, planar_curves, segments, split
+from .api import intersect, intersections, planar_curves, segments
+from .arrangement import arrange, split_both
+from .arrangement import split_connected as split  # the pieces share vertices (issue 13)
 from .compare import (
     Comparison,
     Disagreement,
@@ -43,6 +47,7 @@ __all__ = [
     "Disagreement",
     "Match",
     "Verdict",
+    "arrange",
     "arbitrate_overlap",
     "arbitrate_point",
     "compare",
@@ -57,4 +62,5 @@ __all__ = [
     "planar_curves",
     "segments",
     "split",
+    "split_both",
 ]

@@ -45,6 +45,7 @@ from OCP.BRep import BRep_Tool
 from OCP.TopExp import TopExp
 
 from .._kernels import KIND_CROSSING, KIND_TANGENT, KIND_UNRESOLVED, intersect_batch_kernel
+from ..broadphase import box_pairs_between
 from ..curves import RationalBezier
 from ..errors import InvalidInputError
 from ..intersection import DEFAULT_BUDGET
@@ -374,16 +375,12 @@ def _pair_jobs(
             and la[2] - tol <= hb[2] and lb[2] <= ha[2] + tol
         ]
     else:
-        lo_a, hi_a = np.array(ea.lows), np.array(ea.highs)
-        lo_b, hi_b = np.array(eb.lows), np.array(eb.highs)
-        close = np.all(
-            (lo_a[:, None, :] - tol <= hi_b[None, :, :]) & (lo_b[None, :, :] <= hi_a[:, None, :] + tol),
-            axis=2,
-        )
-        candidates = zip(*np.nonzero(close), strict=True)
+        candidates = box_pairs_between(ea.lows, ea.highs, eb.lows, eb.highs, pad=tol).tolist()
     for ii, jj in candidates:
         i, j = int(ii), int(jj)
         if same and j < i:
+            continue
+        if same and i == j and _cannot_cross_itself(ea.rows[i]):
             continue
         if planar and not (same and i == j):
             jobs.append(_Job(ea, eb, i, j, None, None, True))
@@ -398,6 +395,25 @@ def _pair_jobs(
             ca, cb = sa.curve, sb.curve
         jobs.append(_Job(ea, eb, i, j, ca, None if (same and i == j) else cb))
     return jobs
+
+
+def _cannot_cross_itself(rows: list[list[float]]) -> bool:
+    """True for a segment that has no self-intersection: a line, or a conic arc that does not fold back.
+
+    A rational quadratic with positive weights is a conic arc inside its control
+    triangle; it meets itself only when its control points are collinear with the
+    middle one outside (the curve runs out and back over itself).
+    """
+    if len(rows) == 2:
+        return True
+    if len(rows) != 3:
+        return False
+    (x0, y0, z0, w0), (x1, y1, z1, w1), (x2, y2, z2, w2) = rows
+    a = (x1 / w1 - x0 / w0, y1 / w1 - y0 / w0, z1 / w1 - z0 / w0)
+    b = (x2 / w2 - x1 / w1, y2 / w2 - y1 / w1, z2 / w2 - z1 / w1)
+    dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+    cross = math.hypot(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+    return dot >= 0.0 or cross > 1e-9 * math.hypot(*a) * math.hypot(*b)
 
 
 def _planar_arrays(e: _EdgeInfo) -> tuple[list[list[float]], list[float], list[int]]:
@@ -643,14 +659,11 @@ def _close_edge_pairs(infos_a: list[_EdgeInfo], infos_b: list[_EdgeInfo], tol: f
                 if all(lo_a[k] - tol <= hi_b[k] and lo_b[k] - tol <= hi_a[k] for k in range(3)):
                     out.append((ia, ib))
         return out
-    los_a = np.array([e.lo for e in infos_a]) - tol
-    his_a = np.array([e.hi for e in infos_a]) + tol
-    los_b = np.array([e.lo for e in infos_b])
-    his_b = np.array([e.hi for e in infos_b])
-    close = np.all(
-        (los_a[:, None, :] <= his_b[None, :, :]) & (los_b[None, :, :] <= his_a[:, None, :]), axis=2
-    )
-    return zip(*np.nonzero(close), strict=True)
+    # sort-and-sweep (relief_cad.broadphase): cost grows with the nearby pairs, not with all pairs
+    return box_pairs_between(
+        [e.lo for e in infos_a], [e.hi for e in infos_a], [e.lo for e in infos_b], [e.hi for e in infos_b],
+        pad=tol,
+    ).tolist()
 
 
 def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float, list[_EdgeInfo]]:

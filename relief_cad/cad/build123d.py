@@ -26,9 +26,22 @@ except ImportError as exc:  # pragma: no cover - exercised only without build123
     ) from exc
 
 from . import api, flavour
+from .arrangement import arrange as _arrange
+from .arrangement import split_both as _split_both
+from .arrangement import split_connected as _split_connected
 from .results import EdgeResult
 
-__all__ = ["intersect", "intersections", "split", "wrap_edge", "wrap_edges", "wrap_vertices"]
+__all__ = [
+    "arrange",
+    "intersect",
+    "intersections",
+    "split",
+    "split_both",
+    "wrap_edge",
+    "wrap_edges",
+    "wrap_faces",
+    "wrap_vertices",
+]
 
 
 def wrap_vertices(vertices: list[Any]) -> Any:
@@ -105,11 +118,62 @@ def split(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
     >>> len(split(bd.Edge.make_line((-2, 0), (2, 0)), bd.Edge.make_circle(1.0)))
     3
     """
-    pieces = api.split(a, b, tol=tol)
-    if isinstance(pieces, _bd.ShapeList) and all(isinstance(e, _bd.Edge) for e in pieces):
-        return pieces  # build123d input: already a ShapeList[Edge]
-    return wrap_edges([e.wrapped if hasattr(e, "wrapped") else e for e in pieces])
+    return _as_shapelist(_split_connected(a, b, tol=tol), wrap_edges)
+
+
+# --------------------------------------------------------------------------- arrange (issue 13)
+def arrange(shapes: Any, *, tol: float | None = None, faces: bool = False) -> Any:
+    """Cut all edges of ``shapes`` at all their intersections: a ``ShapeList[Edge]`` or ``ShapeList[Face]``.
+
+    See :func:`relief_cad.cad.arrangement.arrange`. The pieces share vertices, so
+    they make wires and faces directly; inside ``BuildSketch``, ``add(arrange(...,
+    faces=True))`` adds the bounded regions.
+
+    Examples
+    --------
+    >>> import build123d as bd
+    >>> faces = arrange([bd.Rectangle(2, 2), bd.Circle(1.2)], faces=True)
+    >>> union = bd.Rectangle(2, 2) + bd.Circle(1.2)
+    >>> len(faces), round(sum(f.area for f in faces), 6) == round(union.area, 6)
+    (9, True)
+    """
+    return _as_shapelist(_arrange(shapes, tol=tol, faces=faces),
+                         wrap_faces if faces else wrap_edges)
+
+
+def split_both(a: Any, b: Any, *, tol: float | None = None) -> tuple[Any, Any]:
+    """Cut ``a`` and ``b`` where they meet: two ``ShapeList[Edge]`` sharing vertices and overlap edges.
+
+    See :func:`relief_cad.cad.arrangement.split_both`.
+
+    Examples
+    --------
+    >>> import build123d as bd
+    >>> pa, pb = split_both(bd.Edge.make_line((-2, 0), (2, 0)), bd.Edge.make_circle(1.0))
+    >>> shared = [any(v.wrapped.IsSame(w.wrapped) for w in pa[1].vertices()) for v in pb[0].vertices()]
+    >>> len(pa), len(pb), shared
+    (3, 2, [True, True])
+    """
+    pa, pb = _split_both(a, b, tol=tol)
+    return _as_shapelist(pa, wrap_edges), _as_shapelist(pb, wrap_edges)
+
+
+def _as_shapelist(shapes: Any, wrap: Any) -> Any:
+    if isinstance(shapes, _bd.ShapeList) and all(hasattr(s, "wrapped") for s in shapes):
+        return shapes  # build123d input: already native
+    return wrap([s.wrapped if hasattr(s, "wrapped") else s for s in shapes])
 
 
 def _as_list(vertices: Any) -> list[Any]:
     return [v if hasattr(v, "wrapped") else _bd.Vertex(v) for v in vertices]
+
+
+def wrap_faces(faces: list[Any]) -> Any:
+    """Return ``TopoDS_Face`` objects as a build123d ``ShapeList[Face]``.
+
+    Examples
+    --------
+    >>> wrap_faces([])
+    []
+    """
+    return _bd.ShapeList([_bd.Face(f) for f in faces])

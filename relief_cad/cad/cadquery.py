@@ -31,15 +31,20 @@ except ImportError as exc:  # pragma: no cover - exercised only without CadQuery
     ) from exc
 
 from . import api, flavour
+from .arrangement import arrange as _arrange
+from .arrangement import split_connected as _split_connected
 from .results import EdgeResult
 
 __all__ = [
+    "arrange",
+    "arranged",
     "intersect",
     "intersection_points",
     "intersections",
     "register",
     "split",
     "wrap_edge",
+    "wrap_faces",
     "wrap_vertices",
 ]
 
@@ -116,8 +121,64 @@ def split(a: Any, b: Any = None, *, tol: float | None = None) -> list[Any]:
     >>> len(split(line, cq.Edge.makeCircle(1.0)))
     3
     """
-    return [e if isinstance(e, _cq.Shape) else _cq.Edge(e)
-            for e in api.split(_shapes(a), None if b is None else _shapes(b), tol=tol)]
+    return _native(_split_connected(_shapes(a), None if b is None else _shapes(b), tol=tol),
+                   _cq.Edge)
+
+
+def _native(shapes: Any, kind: Any) -> list[Any]:
+    return [s if isinstance(s, _cq.Shape) else kind(s) for s in shapes]
+
+
+# --------------------------------------------------------------------------- arrange (issue 13)
+def arrange(shapes: Any, *, tol: float | None = None, faces: bool = False) -> list[Any]:
+    """Cut all edges of CadQuery shapes / Workplanes at all their intersections: ``Edge`` or ``Face`` list.
+
+    See :func:`relief_cad.cad.arrangement.arrange`.
+
+    Examples
+    --------
+    >>> import cadquery as cq
+    >>> len(arrange([cq.Workplane("XY").rect(2, 2), cq.Workplane("XY").circle(1.2)], faces=True))
+    9
+    """
+    items = [_shapes(s) for s in shapes] if isinstance(shapes, (list, tuple)) else _shapes(shapes)
+    return _native(_arrange(items, tol=tol, faces=faces), _cq.Face if faces else _cq.Edge)
+
+
+def arranged(other: Any = None, *, tol: float | None = None, faces: bool = False) -> Callable[[Any], Any]:
+    """Return a callable for ``Workplane.invoke`` leaving the arranged edges (or faces) on the stack.
+
+    Parameters
+    ----------
+    other : Workplane, CadQuery shape or list of them, optional
+        More shapes to arrange with the stack's objects.
+    tol : float, optional
+        As for :func:`relief_cad.cad.arrangement.arrange`.
+    faces : bool, keyword-only
+        True: the bounded faces of the arrangement instead of its edges.
+
+    Returns
+    -------
+    callable
+        ``f(workplane) -> Workplane`` whose stack holds the pieces (``Edge``) or
+        the faces (``Face``), on the workplane's plane, so ``.extrude()``,
+        ``.edges()``... go on from there.
+
+    Examples
+    --------
+    >>> import cadquery as cq
+    >>> wp = cq.Workplane("XY").rect(2, 2)
+    >>> wp.invoke(arranged(cq.Workplane("XY").circle(1.2), faces=True)).size()
+    9
+    """
+
+    def _apply(wp: Any) -> Any:
+        if not isinstance(wp, _cq.Workplane):
+            raise InputTypeError(f"expected a cadquery Workplane; received {type(wp).__name__}")
+        extra = [] if other is None else list(other) if isinstance(other, (list, tuple)) else [other]
+        return wp.newObject(arrange([wp, *extra], tol=tol, faces=faces))
+
+    return _apply
 
 
 def intersection_points(other: Any = None, *, tol: float | None = None) -> Callable[[Any], Any]:
@@ -182,3 +243,14 @@ def register(name: str = "intersection_points") -> None:
     method.__doc__ = intersection_points.__doc__
     method._relief_cad_plugin = True  # type: ignore[attr-defined]
     setattr(_cq.Workplane, name, method)
+
+
+def wrap_faces(faces: list[Any]) -> list[Any]:
+    """Return ``TopoDS_Face`` objects as CadQuery ``Face`` objects.
+
+    Examples
+    --------
+    >>> wrap_faces([])
+    []
+    """
+    return [_cq.Face(f) for f in faces]

@@ -1,0 +1,289 @@
+"""relief_cad.cad.arrangement (split with shared topology, arrange, faces) on real OCCT shapes.
+
+Oracles: OCCT itself -- IsSame on the pieces' vertices, BRepCheck_Analyzer, the faces of
+BRepAlgoAPI_Common / BRepAlgoAPI_Cut and of General Fuse (BOPAlgo_Builder), and the
+curve points at the pieces' ends measured against their vertices.
+"""
+
+from __future__ import annotations
+
+import math
+
+import build123d as bd
+import numpy as np
+import pytest
+from OCP.BOPAlgo import BOPAlgo_Builder
+from OCP.BRep import BRep_Tool
+from OCP.BRepAdaptor import BRepAdaptor_Curve
+from OCP.BRepAlgoAPI import BRepAlgoAPI_Common, BRepAlgoAPI_Cut
+from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+from OCP.BRepCheck import BRepCheck_Analyzer
+from OCP.BRepGProp import BRepGProp
+from OCP.gp import gp_Pnt
+from OCP.GProp import GProp_GProps
+from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE, TopAbs_VERTEX
+from OCP.TopExp import TopExp
+from OCP.TopoDS import TopoDS
+from OCP.TopTools import TopTools_IndexedMapOfShape
+
+from relief_cad.cad import arrangement as arrange_module
+from relief_cad.cad import build123d as rbd
+from relief_cad.cad import ocp
+from relief_cad.errors import InputTypeError, InvalidInputError, ReliefCadError, ToleranceError
+
+arrange = arrange_module.arrange
+split_both = arrange_module.split_both
+
+
+def raw(s):
+    return s.wrapped if hasattr(s, "wrapped") else s
+
+
+def sub_shapes(shape, kind):
+    m = TopTools_IndexedMapOfShape()
+    TopExp.MapShapes_s(raw(shape), kind, m)
+    return [m.FindKey(i) for i in range(1, m.Extent() + 1)]
+
+
+def ends(edge):
+    e = TopoDS.Edge_s(raw(edge))
+    return TopExp.FirstVertex_s(e), TopExp.LastVertex_s(e)
+
+
+def assert_connected(pieces, tol=1e-9):
+    """Piece ends at one point are one vertex (IsSame), and each end lies within its vertex tolerance."""
+    vertices = []
+    for p in pieces:
+        e = TopoDS.Edge_s(raw(p))
+        t0, t1 = BRep_Tool.Range_s(e)
+        curve = BRepAdaptor_Curve(e)
+        for v, t in zip(ends(p), (t0, t1)):  # FirstVertex (no CumOri) is the one at t0
+            at = np.array(BRep_Tool.Pnt_s(v).Coord())
+            assert np.linalg.norm(np.array(curve.Value(t).Coord()) - at) <= BRep_Tool.Tolerance_s(v)
+            vertices.append((at, v))
+    for i, (p, v) in enumerate(vertices):
+        for q, w in vertices[i + 1:]:
+            if np.linalg.norm(p - q) <= tol:
+                assert v.IsSame(w), f"two vertices at {p}"
+    assert BRepCheck_Analyzer(ocp.make_compound([raw(p) for p in pieces])).IsValid()
+
+
+def area(face):
+    """Adaptive integration (eps 1e-10): OCCT's default Gauss rule is off by 2e-4 on spline faces."""
+    props = GProp_GProps()
+    BRepGProp.SurfaceProperties_s(raw(face), props, 1e-10)
+    return props.Mass()
+
+
+def line(p, q):
+    return BRepBuilderAPI_MakeEdge(gp_Pnt(*p), gp_Pnt(*q)).Edge()
+
+
+# --------------------------------------------------------------------------- shared vertices
+def test_crossing_lines_share_the_cut_vertex():
+    pieces = arrange([line((0, 0, 0), (2, 2, 0)), line((0, 2, 0), (2, 0, 0))])
+    assert len(pieces) == 4
+    centre = [v for p in pieces for v in ends(p) if np.allclose(BRep_Tool.Pnt_s(v).Coord(), (1, 1, 0))]
+    assert len(centre) == 4 and all(centre[0].IsSame(v) for v in centre)
+    assert_connected(pieces)
+
+
+def test_split_both_shares_vertices_and_keeps_orientation():
+    circle = bd.Edge.make_circle(1.0)
+    seg = bd.Edge.make_line((-2, 0.3), (2, 0.3)).reversed()
+    pa, pb = split_both(seg, circle)
+    assert len(pa) == 3 and len(pb) == 3  # the circle is cut twice and at its seam
+    assert all(p.wrapped.Orientation() == seg.wrapped.Orientation() for p in pa)
+    assert_connected(list(pa) + list(pb))
+    cut_a = {v for p in pa for v in p.vertices() if abs(v.Y - 0.3) < 1e-9 and abs(abs(v.X) - math.sqrt(0.91)) < 1e-9}
+    cut_b = [v for p in pb for v in p.vertices() if abs(abs(v.X) - math.sqrt(0.91)) < 1e-9]
+    assert all(any(v.wrapped.IsSame(w.wrapped) for w in cut_a) for v in cut_b) and len(cut_b) == 4
+
+
+def test_overlap_is_one_common_edge_of_both_inputs():
+    a = line((0, 0, 0), (4, 0, 0))
+    b = line((2, 0, 0), (6, 0, 0))
+    pa, pb = split_both(a, b)
+    assert [BRep_Tool.Range_s(e) for e in pa] == [(0.0, 2.0), (2.0, 4.0)]
+    assert pa[1].IsSame(pb[0])
+    assert len(arrange([a, b])) == 3
+    assert_connected(pa + pb)
+
+
+def test_reversed_overlap_shares_the_edge_with_its_own_direction():
+    a = line((0, 0, 0), (4, 0, 0))
+    b = line((6, 0, 0), (2, 0, 0))
+    pa, pb = split_both(a, b)
+    common = [e for e in pb if e.IsSame(pa[1])]
+    assert len(common) == 1
+    first = BRep_Tool.Pnt_s(TopExp.FirstVertex_s(common[0], True)).Coord()
+    assert np.allclose(first, (4, 0, 0))  # b runs from x=6 to x=2, so its copy starts at x=4
+
+
+def test_vertex_tolerance_is_the_measured_error_not_a_blanket_value():
+    spline = bd.Edge.make_spline([(0, -1), (1, 1.3), (2, -0.7), (3, 1.1)])
+    circle = bd.Edge.make_circle(1.4, bd.Plane.XY.offset(0)).moved(bd.Location((1.5, 0.2)))
+    pieces = arrange([spline, circle])
+    measured = {}
+    for p in pieces:
+        e = p.wrapped
+        t0, t1 = BRep_Tool.Range_s(e)
+        c = BRepAdaptor_Curve(e)
+        for v, t in zip(ends(p), (t0, t1)):
+            d = c.Value(t).Distance(BRep_Tool.Pnt_s(v))
+            key = v.TShape().__hash__() if hasattr(v.TShape(), "__hash__") else id(v)
+            measured.setdefault(key, (v, []))[1].append(d)
+    assert len(measured) >= 4
+    for v, ds in measured.values():
+        tol = BRep_Tool.Tolerance_s(v)
+        assert max(ds) <= tol <= max(1e-7, 1.001 * max(ds) + 1e-15)
+    assert_connected(pieces)
+
+
+def test_self_intersection_of_one_edge_is_cut():
+    eight = bd.Edge.make_spline([(0, 0), (1, 1), (2, 0), (1, -1), (0, 0.0001)][:4] + [(0, -0.5)])
+    loop = bd.Edge.make_spline([(0, 0), (2, 1), (2, -1), (0, 1)])  # crosses itself once
+    pieces = arrange(loop)
+    assert len(pieces) == 3
+    assert_connected(pieces)
+    assert len(arrange(loop, faces=True)) == 1
+    assert len(arrange(eight)) >= 1
+
+
+def test_inputs_are_not_modified():
+    a, b = line((0, 0, 0), (2, 2, 0)), line((0, 2, 0), (2, 0, 0))
+    before = [BRep_Tool.Tolerance_s(v) for v in ends(a)] + [BRep_Tool.Range_s(a)]
+    arrange([a, b])
+    assert [BRep_Tool.Tolerance_s(v) for v in ends(a)] + [BRep_Tool.Range_s(a)] == before
+
+
+# --------------------------------------------------------------------------- against General Fuse
+def glyphs_and_waves():
+    text = bd.Text("Relief", font_size=10)
+    waves = [bd.Edge.make_spline([(x, -4 + 1.3 * k + 0.8 * math.sin(0.7 * x + k)) for x in range(-20, 25, 5)])
+             for k in range(6)]
+    return [e.wrapped for e in text.edges()] + [w.wrapped for w in waves]
+
+
+def test_glyphs_over_waves_match_general_fuse_counts():
+    edges = glyphs_and_waves()
+    pieces = arrange(edges)
+    builder = BOPAlgo_Builder()
+    for e in edges:
+        builder.AddArgument(e)
+    builder.Perform()
+    mine = ocp.make_compound(pieces)
+    for kind in (TopAbs_EDGE, TopAbs_VERTEX):
+        assert len(sub_shapes(mine, kind)) == len(sub_shapes(builder.Shape(), kind))
+    assert_connected(pieces)
+
+
+# --------------------------------------------------------------------------- faces against booleans
+def shapes_overlapping():
+    rect = bd.Rectangle(4, 2).face()
+    circle = bd.Circle(1.3).face().moved(bd.Location((1.8, 0.6)))
+    spline = bd.Face(bd.Wire([bd.Edge.make_spline([(-2.6, -0.4), (-1.0, 1.6), (0.4, -0.2), (-1.2, -1.7)],
+                                                  periodic=True)]))
+    return [rect, circle, spline]
+
+
+@pytest.mark.parametrize("pair", [(0, 1), (0, 2), (1, 2)])
+def test_face_areas_equal_occt_common_and_cuts(pair):
+    shapes = shapes_overlapping()
+    a, b = shapes[pair[0]], shapes[pair[1]]
+    faces = arrange([a, b], faces=True)
+    got = sorted(area(f) for f in faces)
+    want = []
+    for op in (BRepAlgoAPI_Common(a.wrapped, b.wrapped), BRepAlgoAPI_Cut(a.wrapped, b.wrapped),
+               BRepAlgoAPI_Cut(b.wrapped, a.wrapped)):
+        want += [area(f) for f in sub_shapes(op.Shape(), TopAbs_FACE)]
+    assert len(got) == len(want)
+    assert np.allclose(got, sorted(want), rtol=1e-7, atol=1e-9)
+    for f in faces:
+        assert BRepCheck_Analyzer(f.wrapped).IsValid()
+
+
+def test_three_shapes_face_areas_equal_general_fuse_faces():
+    shapes = shapes_overlapping()
+    faces = arrange(shapes, faces=True)
+    builder = BOPAlgo_Builder()
+    for s in shapes:
+        builder.AddArgument(s.wrapped)
+    builder.Perform()
+    want = sorted(area(f) for f in sub_shapes(builder.Shape(), TopAbs_FACE))
+    assert np.allclose(sorted(area(f) for f in faces), want, rtol=1e-7, atol=1e-9)
+
+
+def test_ring_of_shapes_encloses_a_hole_face():
+    # four overlapping bars around an empty middle: the middle is a bounded face of the arrangement
+    bars = [bd.Rectangle(5, 1).face().moved(bd.Location((0, 2))), bd.Rectangle(5, 1).face().moved(bd.Location((0, -2))),
+            bd.Rectangle(1, 5).face().moved(bd.Location((2, 0))), bd.Rectangle(1, 5).face().moved(bd.Location((-2, 0)))]
+    faces = arrange(bars, faces=True)
+    assert any(abs(area(f) - 9.0) < 1e-9 for f in faces)  # the 3 x 3 hole
+    assert math.isclose(sum(area(f) for f in faces), 5 * 5 - 0 * 1, rel_tol=1e-9)
+
+
+# --------------------------------------------------------------------------- library forms
+def test_build123d_forms_inside_build_sketch():
+    rect, circle = bd.Rectangle(2, 2), bd.Circle(1.2)
+    faces = rbd.arrange([rect, circle], faces=True)
+    assert isinstance(faces, bd.ShapeList) and all(isinstance(f, bd.Face) for f in faces)
+    with bd.BuildSketch() as sketch:
+        bd.add(faces)  # add(): build123d 0.12; 0.13 calls it insert() and keeps add() deprecated
+    assert math.isclose(sketch.sketch.area, (rect + circle).area, rel_tol=1e-9)
+    edges = rbd.arrange([rect, circle])
+    assert isinstance(edges, bd.ShapeList) and all(isinstance(e, bd.Edge) for e in edges)
+    part = bd.extrude(faces[0], 1.0)
+    assert BRepCheck_Analyzer(part.wrapped).IsValid()
+
+
+def test_cadquery_invoke_leaves_faces_and_edges_on_the_stack():
+    cq = pytest.importorskip("cadquery")
+    from relief_cad.cad import cadquery as rcq
+
+    wp = cq.Workplane("XY").rect(2, 2)
+    faces = wp.invoke(rcq.arranged(cq.Workplane("XY").circle(1.2), faces=True))
+    assert faces.size() == 9 and all(isinstance(f, cq.Face) for f in faces.vals())
+    assert math.isclose(sum(f.Area() for f in faces.vals()),
+                        cq.Workplane("XY").rect(2, 2).extrude(1).union(cq.Workplane("XY").circle(1.2).extrude(1))
+                        .faces("<Z").val().Area(), rel_tol=1e-9)
+    edges = wp.invoke(rcq.arranged(cq.Workplane("XY").circle(1.2)))
+    assert all(isinstance(e, cq.Edge) for e in edges.vals())
+    solid = faces.extrude(1.0)
+    assert solid.val().isValid()
+
+
+# --------------------------------------------------------------------------- errors
+@pytest.mark.parametrize(
+    ("call", "error", "builtin"),
+    [
+        (lambda: arrange(42), InputTypeError, TypeError),
+        (lambda: arrange(ocp.make_compound([])), InvalidInputError, ValueError),
+        (lambda: arrange([line((0, 0, 0), (1, 0, 0))], tol=-1.0), ToleranceError, ValueError),
+        (lambda: arrange([line((0, 0, 0), (1, 0, 0)), line((0, 0, 0), (0, 0, 1)), line((0, 0, 0), (0, 1, 0))],
+                         faces=True), InvalidInputError, ValueError),
+    ],
+)
+def test_bad_input_is_named(call, error, builtin):
+    with pytest.raises(error) as info:
+        call()
+    assert isinstance(info.value, ReliefCadError) and isinstance(info.value, builtin)
+    assert "expected" in str(info.value) or "should be" in str(info.value)
+
+
+def test_garbage_collector_state_is_restored():
+    import gc
+
+    a, b = line((0, 0, 0), (2, 2, 0)), line((0, 2, 0), (2, 0, 0))
+    assert gc.isenabled()
+    arrange([a, b])
+    assert gc.isenabled()
+    gc.disable()
+    try:
+        split_both(a, b)
+        assert not gc.isenabled()  # a caller's choice is kept
+    finally:
+        gc.enable()
+    with pytest.raises(InputTypeError):
+        arrange([a, 42])
+    assert gc.isenabled()

@@ -1,0 +1,89 @@
+"""relief_cad.broadphase: sort-and-sweep pairs against all-pairs testing, point clusters against brute force."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from relief_cad.broadphase import box_pairs, box_pairs_between, cluster_points
+from relief_cad.errors import InvalidInputError, ReliefCadError, ShapeError, ToleranceError
+
+
+def brute_pairs(lo, hi, pad):
+    n = len(lo)
+    return [[i, j] for i in range(n) for j in range(i + 1, n)
+            if np.all((lo[i] - pad <= hi[j]) & (lo[j] <= hi[i] + pad))]
+
+
+@pytest.mark.parametrize("seed", range(6))
+@pytest.mark.parametrize("dim", [1, 2, 3])
+def test_box_pairs_equal_all_pairs(seed, dim):
+    rng = np.random.default_rng(seed)
+    n = int(rng.integers(0, 120))
+    lo = rng.random((n, dim)) * 10
+    hi = lo + rng.random((n, dim)) * rng.choice([0.0, 1.0, 3.0])
+    pad = float(rng.choice([0.0, 0.05, 0.5]))
+    assert box_pairs(lo, hi, pad=pad).tolist() == brute_pairs(lo, hi, pad)
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_box_pairs_between_equal_all_pairs(seed):
+    rng = np.random.default_rng(100 + seed)
+    lo_a = rng.random((int(rng.integers(1, 80)), 3)) * 10
+    hi_a = lo_a + rng.random(lo_a.shape)
+    lo_b = rng.random((int(rng.integers(1, 80)), 3)) * 10
+    k = min(3, len(lo_a), len(lo_b))
+    lo_b[:k] = lo_a[:k]  # equal starts on the sweep axis are found once
+    hi_b = lo_b + rng.random(lo_b.shape)
+    want = [[i, j] for i in range(len(lo_a)) for j in range(len(lo_b))
+            if np.all((lo_a[i] - 0.1 <= hi_b[j]) & (lo_b[j] <= hi_a[i] + 0.1))]
+    assert box_pairs_between(lo_a, hi_a, lo_b, hi_b, pad=0.1).tolist() == want
+
+
+def test_sweep_work_grows_with_nearby_pairs_not_all_pairs():
+    # 20,000 unit boxes along a line: ~2 neighbours each; an all-pairs test would need 2e8 checks
+    n = 20000
+    lo = np.stack([np.arange(n, dtype=float) * 0.9, np.zeros(n)], axis=1)
+    pairs = box_pairs(lo, lo + 1.0)
+    assert pairs.shape == (n - 1, 2)
+    assert np.all(pairs[:, 1] == pairs[:, 0] + 1)
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_cluster_points_are_the_components_of_the_closeness_graph(seed):
+    rng = np.random.default_rng(seed)
+    pts = np.round(rng.random((60, 2)) * 5, 1)  # many exact and near duplicates
+    tol = 0.15
+    labels = cluster_points(pts, tol)
+    close = np.linalg.norm(pts[:, None] - pts[None, :], axis=2) <= tol
+    reach = close.copy()
+    for _ in range(len(pts)):
+        reach = (reach.astype(int) @ close.astype(int)) > 0
+    assert np.array_equal(labels[:, None] == labels[None, :], reach)
+    first = [int(np.flatnonzero(labels == k)[0]) for k in range(labels.max() + 1)]
+    assert first == sorted(first)  # numbered by first appearance
+
+
+def test_links_join_far_points_and_chains_join():
+    labels = cluster_points([[0.0, 0], [1.0, 0], [2.0, 0], [9.0, 9]], 1.0, links=[(0, 3)])
+    assert labels.tolist() == [0, 0, 0, 0]
+
+
+@pytest.mark.parametrize(
+    ("call", "error", "builtin"),
+    [
+        (lambda: box_pairs([[0.0, 0.0]], [[1.0]]), ShapeError, ValueError),
+        (lambda: box_pairs([[0.0, float("nan")]], [[1.0, 1.0]]), InvalidInputError, ValueError),
+        (lambda: box_pairs([[2.0, 0.0]], [[1.0, 1.0]]), InvalidInputError, ValueError),
+        (lambda: box_pairs([[0.0, 0.0]], [[1.0, 1.0]], pad=-1.0), ToleranceError, ValueError),
+        (lambda: box_pairs_between([[0.0]], [[1.0]], [[0.0, 0.0]], [[1.0, 1.0]]), ShapeError, ValueError),
+        (lambda: cluster_points([0.0, 1.0], 0.1), ShapeError, ValueError),
+        (lambda: cluster_points([[0.0], [1.0]], float("inf")), ToleranceError, ValueError),
+        (lambda: cluster_points([[0.0], [1.0]], 0.1, links=[(0, 2)]), ShapeError, ValueError),
+    ],
+)
+def test_bad_input_is_named(call, error, builtin):
+    with pytest.raises(error) as info:
+        call()
+    assert isinstance(info.value, ReliefCadError) and isinstance(info.value, builtin)
+    assert "expected" in str(info.value)
