@@ -30,6 +30,8 @@ from typing import Any
 
 import numpy as np
 
+from relief_cad.cad._compat import box_corners
+
 __all__ = ["run", "cases"]
 
 STEP_DIR = Path(__file__).resolve().parent / "data" / "step"
@@ -129,7 +131,8 @@ def _length(edge: Any) -> float:
 def _step(n: int) -> list[Any]:
     from OCP.gp import gp_Trsf, gp_Vec
     from OCP.TopLoc import TopLoc_Location
-    from OCP.TopoDS import TopoDS
+
+    from relief_cad.cad._compat import downcast_edge
 
     base = _step_edges()
     span = _extent(base)
@@ -138,7 +141,7 @@ def _step(n: int) -> list[Any]:
     while len(edges) < n:
         trsf = gp_Trsf()
         trsf.SetTranslation(gp_Vec(0.37 * span * (k % 6), 0.41 * span * (k // 6), 0.0))
-        edges.extend(TopoDS.Edge_s(e.Moved(TopLoc_Location(trsf))) for e in base)
+        edges.extend(downcast_edge(e.Moved(TopLoc_Location(trsf))) for e in base)
         k += 1
     return edges[:n]
 
@@ -150,7 +153,7 @@ def _extent(edges: list[Any]) -> float:
     box = Bnd_Box()
     for e in edges:
         BRepBndLib.Add_s(e, box)
-    lo_hi = np.array(box.Get()).reshape(2, 3)
+    lo_hi = np.array(box_corners(box)).reshape(2, 3)
     return float(np.max(lo_hi[1] - lo_hi[0]))
 
 
@@ -174,11 +177,12 @@ def _general_fuse(edges: list[Any]) -> Any:
 def _counts(shape: Any) -> tuple[int, int]:
     from OCP.TopAbs import TopAbs_EDGE, TopAbs_VERTEX
     from OCP.TopExp import TopExp
-    from OCP.TopTools import TopTools_IndexedMapOfShape
+
+    from relief_cad.cad._compat import IndexedMapOfShape
 
     out = []
     for kind in (TopAbs_EDGE, TopAbs_VERTEX):
-        m = TopTools_IndexedMapOfShape()
+        m = IndexedMapOfShape()
         TopExp.MapShapes_s(shape, kind, m)
         out.append(m.Extent())
     return out[0], out[1]
@@ -188,12 +192,12 @@ def _vertex_points(shape: Any) -> np.ndarray:
     from OCP.BRep import BRep_Tool
     from OCP.TopAbs import TopAbs_VERTEX
     from OCP.TopExp import TopExp
-    from OCP.TopoDS import TopoDS
-    from OCP.TopTools import TopTools_IndexedMapOfShape
 
-    m = TopTools_IndexedMapOfShape()
+    from relief_cad.cad._compat import IndexedMapOfShape, downcast_vertex
+
+    m = IndexedMapOfShape()
     TopExp.MapShapes_s(shape, TopAbs_VERTEX, m)
-    pts = [BRep_Tool.Pnt_s(TopoDS.Vertex_s(m.FindKey(i))).Coord() for i in range(1, m.Extent() + 1)]
+    pts = [BRep_Tool.Pnt_s(downcast_vertex(m.FindKey(i))).Coord() for i in range(1, m.Extent() + 1)]
     return np.array(pts, dtype=np.float64).reshape(-1, 3)
 
 
@@ -246,7 +250,7 @@ def _edge_boxes(edges: list[Any]) -> tuple[np.ndarray, np.ndarray]:
     for e in edges:
         box = Bnd_Box()
         BRepBndLib.Add_s(e, box)
-        corners.append(box.Get())
+        corners.append(box_corners(box))
     c = np.array(corners, dtype=np.float64).reshape(-1, 6)
     return c[:, :3], c[:, 3:]
 

@@ -47,7 +47,11 @@ __all__ = [
     "Array1OfReal",
     "IndexedMapOfShape",
     "ListOfShape",
+    "box_corners",
     "check_ocp_version",
+    "downcast_edge",
+    "downcast_face",
+    "downcast_vertex",
     "install_hint",
     "ocp_version",
     "versions",
@@ -205,3 +209,15 @@ downcast_edge: Any = _TopoDS.Edge
 
 downcast_vertex: Any = _TopoDS.Vertex
 """Downcast a ``TopoDS_Shape`` of type vertex to ``TopoDS_Vertex`` (``TopoDS::Vertex``)."""
+
+downcast_face: Any = _TopoDS.Face
+"""Downcast a ``TopoDS_Shape`` of type face to ``TopoDS_Face`` (``TopoDS::Face``)."""
+
+
+def box_corners(box: Any) -> tuple[float, float, float, float, float, float]:
+    """Return ``(xmin, ymin, zmin, xmax, ymax, zmax)`` of a ``Bnd_Box``.
+
+    OCP 8.0 cannot convert the return value of ``Bnd_Box.Get``; ``CornerMin``/``CornerMax`` work in both.
+    """
+    lo, hi = box.CornerMin(), box.CornerMax()
+    return (lo.X(), lo.Y(), lo.Z(), hi.X(), hi.Y(), hi.Z())

@@ -59,11 +59,12 @@ try:
     from OCP.TopAbs import TopAbs_EDGE, TopAbs_FORWARD
     from OCP.TopExp import TopExp
     from OCP.TopLoc import TopLoc_Location
-    from OCP.TopoDS import TopoDS, TopoDS_Edge, TopoDS_Vertex
+    from OCP.TopoDS import TopoDS_Edge, TopoDS_Vertex
 except ImportError as exc:  # pragma: no cover - api above raises first
     raise ImportError("relief_cad.cad.arrangement needs OCP") from exc
 from ._compat import IndexedMapOfShape as TopTools_IndexedMapOfShape
 from ._compat import ListOfShape as TopTools_ListOfShape
+from ._compat import box_corners, downcast_edge, downcast_face
 
 __all__ = ["arrange", "split_both", "split_connected"]
 
@@ -279,7 +280,7 @@ def _pieces(graph: _Graph) -> tuple[list[list[_Piece]], list[Any], np.ndarray]:
             else:
                 closed = twin.nodes[0] == twin.nodes[1]
                 reverse = twin.nodes != piece.nodes or (closed and not _same_way(twin, piece))
-                shared = TopoDS.Edge_s(twin.edge.Reversed()) if reverse else twin.edge
+                shared = downcast_edge(twin.edge.Reversed()) if reverse else twin.edge
                 pieces[n] = _Piece(shared, piece.nodes, piece.mid, twin.curve, twin.t)
         out.append(pieces)
     return out, vertices, centres
@@ -295,7 +296,7 @@ def _same_way(p: _Piece, q: _Piece) -> bool:
 def _oriented(piece: TopoDS_Edge, original: Any) -> TopoDS_Edge:
     if original.Orientation() == TopAbs_FORWARD:
         return piece
-    return TopoDS.Edge_s(piece.Reversed())
+    return downcast_edge(piece.Reversed())
 
 
 # --------------------------------------------------------------------------- faces
@@ -319,7 +320,7 @@ def _bounded_faces(edges: list[TopoDS_Edge], plane: gp_Pln) -> list[Any]:
     box = Bnd_Box()
     for e in edges:
         BRepBndLib.Add_s(e, box)
-    corners = np.array(box.Get()).reshape(2, 3)
+    corners = np.array(box_corners(box)).reshape(2, 3)
     pts = np.array([[x, y, z] for x in corners[:, 0] for y in corners[:, 1] for z in corners[:, 2]])
     pos = plane.Position()
     o = np.array(pos.Location().Coord())
@@ -336,11 +337,11 @@ def _bounded_faces(edges: list[TopoDS_Edge], plane: gp_Pln) -> list[Any]:
     for i in range(1, frame_edges.Extent() + 1):
         shapes.Append(frame_edges.FindKey(i))
     for e in edges:
-        forward = TopoDS.Edge_s(e.Oriented(TopAbs_FORWARD))
+        forward = downcast_edge(e.Oriented(TopAbs_FORWARD))
         shapes.Append(forward)
         shapes.Append(forward.Reversed())
     builder = BOPAlgo_BuilderFace()
-    builder.SetFace(TopoDS.Face_s(frame.Oriented(TopAbs_FORWARD)))
+    builder.SetFace(downcast_face(frame.Oriented(TopAbs_FORWARD)))
     builder.SetShapes(shapes)
     builder.SetAvoidInternalShapes(True)
     builder.Perform()
@@ -363,7 +364,7 @@ def _unique(pieces: list[list[_Piece]]) -> list[TopoDS_Edge]:
         for p in edge_pieces:
             if not seen.Contains(p.edge):
                 seen.Add(p.edge)
-                out.append(TopoDS.Edge_s(p.edge.Oriented(TopAbs_FORWARD)))
+                out.append(downcast_edge(p.edge.Oriented(TopAbs_FORWARD)))
     return out
 
 

@@ -23,13 +23,13 @@ from OCP.gp import gp_Pnt
 from OCP.GProp import GProp_GProps
 from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE, TopAbs_VERTEX
 from OCP.TopExp import TopExp
-from OCP.TopoDS import TopoDS
-from OCP.TopTools import TopTools_IndexedMapOfShape
 
 from relief_cad.cad import arrangement as arrange_module
 from relief_cad.cad import build123d as rbd
 from relief_cad.cad import ocp
+from relief_cad.cad._compat import IndexedMapOfShape, downcast_edge
 from relief_cad.errors import InputTypeError, InvalidInputError, ReliefCadError, ToleranceError
+from tests._env import needs_cadquery
 
 arrange = arrange_module.arrange
 split_both = arrange_module.split_both
@@ -40,13 +40,13 @@ def raw(s):
 
 
 def sub_shapes(shape, kind):
-    m = TopTools_IndexedMapOfShape()
+    m = IndexedMapOfShape()
     TopExp.MapShapes_s(raw(shape), kind, m)
     return [m.FindKey(i) for i in range(1, m.Extent() + 1)]
 
 
 def ends(edge):
-    e = TopoDS.Edge_s(raw(edge))
+    e = downcast_edge(raw(edge))
     return TopExp.FirstVertex_s(e), TopExp.LastVertex_s(e)
 
 
@@ -54,7 +54,7 @@ def assert_connected(pieces, tol=1e-9):
     """Piece ends at one point are one vertex (IsSame), and each end lies within its vertex tolerance."""
     vertices = []
     for p in pieces:
-        e = TopoDS.Edge_s(raw(p))
+        e = downcast_edge(raw(p))
         t0, t1 = BRep_Tool.Range_s(e)
         curve = BRepAdaptor_Curve(e)
         for v, t in zip(ends(p), (t0, t1)):  # FirstVertex (no CumOri) is the one at t0
@@ -237,8 +237,10 @@ def test_build123d_forms_inside_build_sketch():
     assert BRepCheck_Analyzer(part.wrapped).IsValid()
 
 
+@needs_cadquery
 def test_cadquery_invoke_leaves_faces_and_edges_on_the_stack():
-    cq = pytest.importorskip("cadquery")
+    import cadquery as cq
+
     from relief_cad.cad import cadquery as rcq
 
     wp = cq.Workplane("XY").rect(2, 2)
