@@ -1,6 +1,7 @@
 """relief_cad: curve/curve intersection by relief perspective and Bézier clipping.
 
-The core (this package) imports numpy and numba only; the CAD adapters live in
+The core (this package) imports numpy only (its kernels are compiled by Cython at install);
+the CAD adapters live in
 :mod:`relief_cad.cad` and are never imported from here.
 
 >>> from relief_cad import RationalBezier, intersect

@@ -1,6 +1,6 @@
 r"""Low-level ("hazmat") Bézier clipping functions, documented, no stability promise.
 
-These are thin Python faces of the numba kernels in :mod:`relief_cad._kernels`
+These are thin Python faces of the compiled kernels in :mod:`relief_cad._kernels`
 that the planar intersector runs; they let you inspect one clipping step.
 
 A *fat line* of a curve is a strip ``dmin <= nx x + ny y + c <= dmax`` (unit

@@ -5,7 +5,7 @@ Bézier clipping here; space curves are handed to :mod:`relief_cad.space`),
 :func:`intersect_line` intersects a planar curve with an infinite line, and
 :func:`intersect_many` runs many planar pairs in one compiled call.
 
-The planar solver (one numba kernel, :mod:`relief_cad._kernels`):
+The planar solver (one compiled kernel, :mod:`relief_cad._kernels.planar`):
 
 1. moves both curves into a common frame by an exact translation and an exact
    power-of-two scaling (so parameters and exactness are unaffected);

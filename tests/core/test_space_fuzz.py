@@ -168,8 +168,8 @@ def test_metamorphic_relations(case: tuple[RationalBezier, RationalBezier, float
 
 
 def test_space_suite_runs_without_jit() -> None:
-    """The kernels are plain Python under NUMBA_DISABLE_JIT=1 (for debugging and coverage)."""
-    env = dict(os.environ, NUMBA_DISABLE_JIT="1")
+    """The kernels run as plain Python under RELIEF_CAD_PURE=1 (for debugging and coverage)."""
+    env = dict(os.environ, RELIEF_CAD_PURE="1")
     result = subprocess.run(
         [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "--no-header",
          "tests/core/test_intersection_space.py", "-k", "shared_end or mixed or coplanar or self_intersection or lines"],

@@ -1,0 +1,269 @@
+"""Homogeneous Bézier curves: de Casteljau evaluation and subdivision, boxes, frame, tolerance.
+
+Rational Bézier curves in homogeneous form (the paper's §2); the exact joint frame of a pair and
+the default tolerance of :mod:`relief_cad.tolerances`.
+
+Compiled by Cython (pure-Python mode) when the package is built; see :mod:`relief_cad._kernels`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import cython
+import numpy as np
+from cython.cimports.libc.math import sqrt
+
+from .constants import _EPS
+
+
+def _grow(arr, n):
+    """Return ``arr`` with room for at least ``n`` rows (copying when it must grow)."""
+    if n <= arr.shape[0]:
+        return arr
+    cap = max(n, 2 * arr.shape[0])
+    out = np.empty((cap, arr.shape[1]))
+    out[: arr.shape[0], :] = arr
+    return out
+
+
+def _segment(
+    H: cython.const[cython.double][:, :], t0: cython.double, t1: cython.double, out: cython.double[:, :]
+):
+    """Homogeneous control points of the sub-curve on ``[t0, t1]`` into ``out``."""
+    m = H.shape[0]
+    n = m - 1
+    for i in range(m):
+        out[i, 0] = H[i, 0]
+        out[i, 1] = H[i, 1]
+        out[i, 2] = H[i, 2]
+    if t1 < 1.0:
+        s = 1.0 - t1
+        for r in range(1, n + 1):
+            for i in range(n, r - 1, -1):
+                out[i, 0] = s * out[i - 1, 0] + t1 * out[i, 0]
+                out[i, 1] = s * out[i - 1, 1] + t1 * out[i, 1]
+                out[i, 2] = s * out[i - 1, 2] + t1 * out[i, 2]
+    if t0 > 0.0:
+        tt = t0 / t1 if t1 < 1.0 else t0
+        s = 1.0 - tt
+        for r in range(1, n + 1):
+            for i in range(0, n - r + 1):
+                out[i, 0] = s * out[i, 0] + tt * out[i + 1, 0]
+                out[i, 1] = s * out[i, 1] + tt * out[i + 1, 1]
+                out[i, 2] = s * out[i, 2] + tt * out[i + 1, 2]
+
+
+def _cartesian(S: cython.double[:, :], P: cython.double[:, :], W: cython.double[:]):
+    """Cartesian points and weights (weights scaled to max 1) of homogeneous rows ``S``.
+
+    Returns the bounding box ``(xlo, xhi, ylo, yhi)`` of the points.
+    """
+    m = S.shape[0]
+    wmax = 0.0
+    for i in range(m):
+        if S[i, 2] > wmax:
+            wmax = S[i, 2]
+    xlo = math.inf
+    xhi = -math.inf
+    ylo = math.inf
+    yhi = -math.inf
+    iwmax = 1.0 / wmax
+    for i in range(m):
+        w = S[i, 2]
+        iw = 1.0 / w
+        x = S[i, 0] * iw
+        y = S[i, 1] * iw
+        P[i, 0] = x
+        P[i, 1] = y
+        W[i] = w * iwmax
+        xlo = min(xlo, x)
+        xhi = max(xhi, x)
+        ylo = min(ylo, y)
+        yhi = max(yhi, y)
+    return xlo, xhi, ylo, yhi
+
+
+def _eval(H: cython.const[cython.double][:, :], t: cython.double, wk: cython.double[:, :]):
+    """Point, first and second derivative of the rational curve ``H`` at ``t``.
+
+    Returns ``(x, y, dx, dy, ddx, ddy)``; ``wk`` is scratch of ``H``'s shape.
+    """
+    m = H.shape[0]
+    n = m - 1
+    s = 1.0 - t
+    if n == 1:
+        vx = s * H[0, 0] + t * H[1, 0]
+        vy = s * H[0, 1] + t * H[1, 1]
+        vw = s * H[0, 2] + t * H[1, 2]
+        d1x = H[1, 0] - H[0, 0]
+        d1y = H[1, 1] - H[0, 1]
+        d1w = H[1, 2] - H[0, 2]
+        d2x = 0.0
+        d2y = 0.0
+        d2w = 0.0
+    else:
+        for i in range(m):
+            wk[i, 0] = H[i, 0]
+            wk[i, 1] = H[i, 1]
+            wk[i, 2] = H[i, 2]
+        for r in range(1, n - 1):
+            for i in range(0, m - r):
+                wk[i, 0] = s * wk[i, 0] + t * wk[i + 1, 0]
+                wk[i, 1] = s * wk[i, 1] + t * wk[i + 1, 1]
+                wk[i, 2] = s * wk[i, 2] + t * wk[i + 1, 2]
+        r0x = s * wk[0, 0] + t * wk[1, 0]
+        r0y = s * wk[0, 1] + t * wk[1, 1]
+        r0w = s * wk[0, 2] + t * wk[1, 2]
+        r1x = s * wk[1, 0] + t * wk[2, 0]
+        r1y = s * wk[1, 1] + t * wk[2, 1]
+        r1w = s * wk[1, 2] + t * wk[2, 2]
+        vx = s * r0x + t * r1x
+        vy = s * r0y + t * r1y
+        vw = s * r0w + t * r1w
+        d1x = n * (r1x - r0x)
+        d1y = n * (r1y - r0y)
+        d1w = n * (r1w - r0w)
+        c = n * (n - 1)
+        d2x = c * (wk[2, 0] - 2.0 * wk[1, 0] + wk[0, 0])
+        d2y = c * (wk[2, 1] - 2.0 * wk[1, 1] + wk[0, 1])
+        d2w = c * (wk[2, 2] - 2.0 * wk[1, 2] + wk[0, 2])
+    x = vx / vw
+    y = vy / vw
+    dx = (d1x - x * d1w) / vw
+    dy = (d1y - y * d1w) / vw
+    ddx = (d2x - 2.0 * dx * d1w - x * d2w) / vw
+    ddy = (d2y - 2.0 * dy * d1w - y * d2w) / vw
+    return x, y, dx, dy, ddx, ddy
+
+
+def _frame(PA: cython.const[cython.double][:, :], PB: cython.const[cython.double][:, :]):
+    """Exact translation ``(cx, cy)`` and power-of-two scale of the joint frame."""
+    cx = 0.0
+    cy = 0.0
+    for k in range(2):
+        lo = math.inf
+        hi = -math.inf
+        for i in range(PA.shape[0]):
+            lo = min(lo, PA[i, k])
+            hi = max(hi, PA[i, k])
+        for i in range(PB.shape[0]):
+            lo = min(lo, PB[i, k])
+            hi = max(hi, PB[i, k])
+        c = 0.0
+        # Sterbenz: x - c is exact when c / 2 <= x <= 2 c (same sign).
+        if lo > 0.0 and hi <= 2.0 * lo:
+            c = lo
+        elif hi < 0.0 and lo >= 2.0 * hi:
+            c = hi
+        if k == 0:
+            cx = c
+        else:
+            cy = c
+    big = 0.0
+    for i in range(PA.shape[0]):
+        big = max(big, abs(PA[i, 0] - cx), abs(PA[i, 1] - cy))
+    for i in range(PB.shape[0]):
+        big = max(big, abs(PB[i, 0] - cx), abs(PB[i, 1] - cy))
+    scale = 1.0
+    if big > 0.0:
+        e = max(math.frexp(big)[1], -1000)  # keep the scale finite for subnormal inputs
+        scale = math.ldexp(1.0, -e)
+    return cx, cy, scale
+
+
+def _bbox_update(P: cython.const[cython.double][:, :], box: cython.double[:]):
+    """Grow ``box = [xlo, xhi, ylo, yhi, max|coord|]`` by the points ``P``."""
+    for i in range(P.shape[0]):
+        x = P[i, 0]
+        y = P[i, 1]
+        box[0] = min(box[0], x)
+        box[1] = max(box[1], x)
+        box[2] = min(box[2], y)
+        box[3] = max(box[3], y)
+        box[4] = max(box[4], abs(x), abs(y))
+
+
+def _curve_box_update(
+    P: cython.const[cython.double][:, :], W: cython.const[cython.double][:], box: cython.double[:]
+):
+    """Grow ``box`` (per coordinate ``[lo, hi]`` pairs) by samples of the curve itself.
+
+    The curve is sampled at ``2 (n + 1) + 1`` uniform parameters by homogeneous de
+    Casteljau: the curve's own extent, not its control polygon's (which can be far
+    larger for ill-conditioned curves).
+    """
+    m = P.shape[0]
+    d = P.shape[1]
+    ns = 2 * m + 1
+    wk = np.empty((m, d + 1))
+    for k in range(ns):
+        t = k / (ns - 1.0)
+        s = 1.0 - t
+        for i in range(m):
+            for j in range(d):
+                wk[i, j] = W[i] * P[i, j]
+            wk[i, d] = W[i]
+        for r in range(1, m):
+            for i in range(m - r):
+                for j in range(d + 1):
+                    wk[i, j] = s * wk[i, j] + t * wk[i + 1, j]
+        for j in range(d):
+            x = wk[0, j] / wk[0, d]
+            box[2 * j] = min(box[2 * j], x)
+            box[2 * j + 1] = max(box[2 * j + 1], x)
+
+
+def _default_tol(
+    PA: cython.const[cython.double][:, :],
+    WA: cython.const[cython.double][:],
+    PB: cython.const[cython.double][:, :],
+    WB: cython.const[cython.double][:],
+):
+    """:func:`relief_cad.tolerances.default_tolerance` of both curves (2-D or 3-D).
+
+    ``1e-9`` times the diagonal of the curves' joint extent (sampled) plus ``64 eps``
+    times the largest control-point coordinate (the rounding level of the data).
+    """
+    d = PA.shape[1]
+    box = np.empty(2 * d)
+    for j in range(d):
+        box[2 * j] = math.inf
+        box[2 * j + 1] = -math.inf
+    _curve_box_update(PA, WA, box)
+    _curve_box_update(PB, WB, box)
+    big = 0.0
+    for i in range(PA.shape[0]):
+        for j in range(d):
+            big = max(big, abs(PA[i, j]))
+    for i in range(PB.shape[0]):
+        for j in range(d):
+            big = max(big, abs(PB[i, j]))
+    diag = 0.0
+    for j in range(d):
+        diag += (box[2 * j + 1] - box[2 * j]) ** 2
+    tol = 1e-9 * sqrt(diag) + 64.0 * _EPS * big
+    if not (tol > 0.0 and tol < math.inf):
+        return 1e-300
+    return tol
+
+
+def _homog(
+    P: cython.const[cython.double][:, :],
+    W: cython.const[cython.double][:],
+    cx: cython.double,
+    cy: cython.double,
+    scale: cython.double,
+):
+    """Homogeneous rows of the curve in the frame, weights scaled to max 1."""
+    m = P.shape[0]
+    wmax = 0.0
+    for i in range(m):
+        wmax = max(wmax, W[i])
+    H = np.empty((m, 3))
+    for i in range(m):
+        w = W[i] / wmax
+        H[i, 0] = w * ((P[i, 0] - cx) * scale)
+        H[i, 1] = w * ((P[i, 1] - cy) * scale)
+        H[i, 2] = w
+    return H

@@ -1,0 +1,118 @@
+"""Double-double arithmetic and the certified Newton polish of ill-conditioned roots.
+
+Error-free transformations (two-sum, Dekker's two-product) and a double-double de Casteljau.
+
+Compiled by Cython (pure-Python mode) when the package is built; see :mod:`relief_cad._kernels`.
+"""
+
+from __future__ import annotations
+
+import cython
+
+from .bezier import _eval
+
+
+def _two_sum(a: cython.double, b: cython.double):
+    s = a + b
+    bb = s - a
+    return s, (a - (s - bb)) + (b - bb)
+
+
+def _two_prod(a: cython.double, b: cython.double):
+    p = a * b
+    c = 134217729.0 * a
+    ah = c - (c - a)
+    al = a - ah
+    c = 134217729.0 * b
+    bh = c - (c - b)
+    bl = b - bh
+    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
+
+
+def _dd_add(ah: cython.double, al: cython.double, bh: cython.double, bl: cython.double):
+    s, e = _two_sum(ah, bh)
+    e += al + bl
+    return _two_sum(s, e)
+
+
+def _dd_mul(ah: cython.double, al: cython.double, bh: cython.double, bl: cython.double):
+    p, e = _two_prod(ah, bh)
+    e += ah * bl + al * bh
+    return _two_sum(p, e)
+
+
+def _dd_div(ah: cython.double, al: cython.double, bh: cython.double, bl: cython.double):
+    q1 = ah / bh
+    ph, pl = _dd_mul(q1, 0.0, bh, bl)
+    rh, rl = _dd_add(ah, al, -ph, -pl)
+    q2 = rh / bh
+    return _two_sum(q1, q2)
+
+
+def _eval_dd(H: cython.const[cython.double][:, :], t: cython.double, wk: cython.double[:, :]):
+    """Point of the rational curve ``H`` at ``t`` in double-double ``(xh, xl, yh, yl)``.
+
+    de Casteljau with every operation error-free-transformed (``wk``: scratch of
+    shape ``(m, 6)``), so the result is accurate to about ``eps**2 * cond``.
+    """
+    m = H.shape[0]
+    sh, sl = _two_sum(1.0, -t)
+    for i in range(m):
+        for k in range(3):
+            wk[i, 2 * k] = H[i, k]
+            wk[i, 2 * k + 1] = 0.0
+    for r in range(1, m):
+        for i in range(0, m - r):
+            for k in range(3):
+                ph, pl = _dd_mul(sh, sl, wk[i, 2 * k], wk[i, 2 * k + 1])
+                qh, ql = _dd_mul(t, 0.0, wk[i + 1, 2 * k], wk[i + 1, 2 * k + 1])
+                vh, vl = _dd_add(ph, pl, qh, ql)
+                wk[i, 2 * k] = vh
+                wk[i, 2 * k + 1] = vl
+    xh, xl = _dd_div(wk[0, 0], wk[0, 1], wk[0, 4], wk[0, 5])
+    yh, yl = _dd_div(wk[0, 2], wk[0, 3], wk[0, 4], wk[0, 5])
+    return xh, xl, yh, yl
+
+
+def _polish_dd(
+    HA: cython.const[cython.double][:, :],
+    HB: cython.const[cython.double][:, :],
+    t: cython.double,
+    u: cython.double,
+    wa: cython.double[:, :],
+    wb: cython.double[:, :],
+    da: cython.double[:, :],
+    db: cython.double[:, :],
+    steps: cython.Py_ssize_t,
+):
+    """Newton steps on ``a(t) - b(u)`` with a double-double residual.
+
+    Returns ``(t, u, certified)``: ``certified`` when the iteration reached a fixed
+    point in double precision parameters (last step below 4e-16), i.e. an exact
+    root lies within an ulp or two; a spurious root of a rounded double root
+    keeps moving and is not certified.
+    """
+    for _ in range(steps):
+        axh, axl, ayh, ayl = _eval_dd(HA, t, da)
+        bxh, bxl, byh, byl = _eval_dd(HB, u, db)
+        fx, _fxl = _dd_add(axh, axl, -bxh, -bxl)
+        fy, _fyl = _dd_add(ayh, ayl, -byh, -byl)
+        if fx == 0.0 and fy == 0.0:
+            return t, u, True
+        _ax, _ay, adx, ady, _a2, _a3 = _eval(HA, t, wa)
+        _bx, _by, bdx, bdy, _b2, _b3 = _eval(HB, u, wb)
+        det = -adx * bdy + ady * bdx
+        if det == 0.0:
+            return t, u, False
+        dt = (-fx * (-bdy) + bdx * (-fy)) / det
+        du = (adx * (-fy) - ady * (-fx)) / det
+        if abs(dt) > 0.25 or abs(du) > 0.25:
+            return t, u, False
+        nt = min(1.0, max(0.0, t + dt))
+        nu = min(1.0, max(0.0, u + du))
+        small = abs(dt) <= 4e-16 and abs(du) <= 4e-16
+        t = nt
+        u = nu
+        if small:
+            return t, u, True
+    return t, u, False

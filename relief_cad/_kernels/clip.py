@@ -1,0 +1,135 @@
+"""Fat lines and convex-hull clipping of a parameter range.
+
+Bézier clipping (the paper's §4): the fat line of a curve and the explicit Bézier functions of
+the signed distance, bounded by their convex hull.
+
+Compiled by Cython (pure-Python mode) when the package is built; see :mod:`relief_cad._kernels`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import cython
+from cython.cimports.libc.math import hypot, sqrt
+
+
+def fat_line_kernel(P: cython.const[cython.double][:, :], perpendicular: cython.bint):
+    """Fat line ``(nx, ny, c, dmin, dmax)`` of control points ``P`` (not widened).
+
+    The signed distance is ``d(x, y) = nx x + ny y + c`` (unit normal); every
+    control point, hence the curve, has ``dmin <= d <= dmax``. The line runs
+    through the end points; when they (nearly) coincide it runs from the first
+    point to the farthest control point; for a point-like polygon it is the x axis
+    direction. ``perpendicular`` swaps in the perpendicular direction (the fat line
+    bounding the curve *along* its chord).
+    """
+    m = P.shape[0]
+    n = m - 1
+    x0 = P[0, 0]
+    y0 = P[0, 1]
+    ex = P[n, 0] - x0
+    ey = P[n, 1] - y0
+    chord = hypot(ex, ey)
+    far = 0.0
+    fx = 0.0
+    fy = 0.0
+    for i in range(1, m):
+        ddx = P[i, 0] - x0
+        ddy = P[i, 1] - y0
+        dd = ddx * ddx + ddy * ddy
+        if dd > far:
+            far = dd
+            fx = ddx
+            fy = ddy
+    if chord * chord <= 1e-6 * far:
+        ex = fx
+        ey = fy
+        chord = sqrt(far)
+    if chord == 0.0:
+        ex = 1.0
+        ey = 0.0
+        chord = 1.0
+    if perpendicular:
+        nx = ex / chord
+        ny = ey / chord
+    else:
+        nx = -ey / chord
+        ny = ex / chord
+    c = -(nx * x0 + ny * y0)
+    dmin = math.inf
+    dmax = -math.inf
+    for i in range(m):
+        d = nx * P[i, 0] + ny * P[i, 1] + c
+        dmin = min(dmin, d)
+        dmax = max(dmax, d)
+    return nx, ny, c, dmin, dmax
+
+
+def hull_range_kernel(e: cython.double[:]):
+    """Parameter range where the convex hull of ``(j / m, e[j])`` reaches ``e >= 0``.
+
+    Returns ``(lo, hi)``; ``lo > hi`` means the hull lies entirely below zero.
+    """
+    m = e.shape[0] - 1
+    h = 1.0 / m
+    lo = math.inf
+    hi = -math.inf
+    for j in range(m + 1):
+        if e[j] >= 0.0:
+            sj = j * h
+            lo = min(lo, sj)
+            hi = max(hi, sj)
+    if lo == 0.0 and hi == 1.0:
+        return lo, hi
+    # hull edges crossing zero: segments from a point below to a point above
+    for i in range(m + 1):
+        ei = e[i]
+        if ei >= 0.0:
+            continue
+        si = i * h
+        for j in range(m + 1):
+            ej = e[j]
+            if ej <= 0.0:
+                continue
+            sj = j * h
+            if lo <= min(si, sj) and max(si, sj) <= hi:
+                continue  # this crossing cannot widen [lo, hi]
+            s = si + (sj - si) * (ei / (ei - ej))
+            lo = min(lo, s)
+            hi = max(hi, s)
+    if lo < 0.0:
+        lo = 0.0
+    if hi > 1.0:
+        hi = 1.0
+    return lo, hi
+
+
+def clip_range_kernel(
+    P: cython.const[cython.double][:, :],
+    W: cython.const[cython.double][:],
+    nx: cython.double,
+    ny: cython.double,
+    c: cython.double,
+    dmin: cython.double,
+    dmax: cython.double,
+    e: cython.double[:],
+):
+    """Range ``(lo, hi)`` of a rational curve's parameter where ``dmin <= d <= dmax`` is possible.
+
+    ``d`` is the signed distance ``nx x + ny y + c`` of the curve ``(P, W)``;
+    ``dmin <= d(s)`` is ``sum W_j (d_j - dmin) B_j(s) >= 0`` and ``d(s) <= dmax`` is
+    ``sum W_j (dmax - d_j) B_j(s) >= 0`` (the weights' sum is positive), and each is
+    bounded by the convex hull of its Bézier function. ``e`` is scratch of length
+    ``n + 1``. Returns ``lo > hi`` when the curve cannot meet the strip.
+    """
+    m = P.shape[0]
+    for j in range(m):
+        e[j] = W[j] * (nx * P[j, 0] + ny * P[j, 1] + c - dmin)
+    lo1, hi1 = hull_range_kernel(e)
+    if lo1 > hi1:
+        return 1.0, 0.0
+    for j in range(m):
+        e[j] = W[j] * (dmax - (nx * P[j, 0] + ny * P[j, 1] + c))
+    lo2, hi2 = hull_range_kernel(e)
+    return max(lo1, lo2), min(hi1, hi2)

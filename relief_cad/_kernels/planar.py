@@ -1,0 +1,671 @@
+"""The planar pair driver.
+
+End points, overlaps, the clipping loop, clusters of candidates, their polish and
+classification, merging and the result rows.
+
+Compiled by Cython (pure-Python mode) when the package is built; see :mod:`relief_cad._kernels`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import cython
+import numpy as np
+from cython.cimports.libc.math import hypot
+
+from .bezier import _cartesian, _default_tol, _eval, _frame, _grow, _homog, _segment
+from .certify import _polish_dd
+from .clip import clip_range_kernel, fat_line_kernel
+from .constants import _EPS, _ROUND, _SPLIT_RATIO, KIND_CROSSING, KIND_OVERLAP, KIND_TANGENT, KIND_UNRESOLVED
+from .polish import _angle_sin, _closest, _coincide, _local_dist, _newton, _point_on
+
+
+def _in_overlap(
+    ov,
+    nov: cython.Py_ssize_t,
+    t0: cython.double,
+    t1: cython.double,
+    u0: cython.double,
+    u1: cython.double,
+    margin: cython.double,
+):
+    """True when the box lies inside one overlap's parameter rectangle (plus margin)."""
+    for k in range(nov):
+        a0 = ov[k, 0] - margin
+        a1 = ov[k, 1] + margin
+        b0 = min(ov[k, 2], ov[k, 3]) - margin
+        b1 = max(ov[k, 2], ov[k, 3]) + margin
+        if t0 >= a0 and t1 <= a1 and u0 >= b0 and u1 <= b1:
+            return True
+    return False
+
+
+def _add(res, nres, pair, kind, t, u, t1, u1, x, y, dist):
+    res = _grow(res, nres + 1)
+    res[nres, 0] = pair
+    res[nres, 1] = kind
+    res[nres, 2] = t
+    res[nres, 3] = u
+    res[nres, 4] = t1
+    res[nres, 5] = u1
+    res[nres, 6] = x
+    res[nres, 7] = y
+    res[nres, 8] = dist
+    return res, nres + 1
+
+
+def intersect_pair_kernel(
+    PA: cython.const[cython.double][:, :],
+    WA: cython.const[cython.double][:],
+    PB: cython.const[cython.double][:, :],
+    WB: cython.const[cython.double][:],
+    tol: cython.double,
+    budget,
+    pair,
+    res,
+    nres,
+):
+    """Intersect two planar rational Bézier curves; append result rows to ``res``.
+
+    Parameters are the Cartesian control points and weights of each curve, the
+    distance tolerance (model units), the iteration budget, the pair index written
+    in column 0, and the result array with its row count. Returns ``(res, nres)``.
+    """
+    ma = PA.shape[0]
+    mb = PB.shape[0]
+    na = ma - 1
+    nb = mb - 1
+    if not tol > 0.0:
+        tol = _default_tol(PA, WA, PB, WB)
+    # disjoint bounding boxes (widened by tol): nothing to do
+    xla = xha = PA[0, 0]
+    yla = yha = PA[0, 1]
+    for i in range(1, ma):
+        xla = min(xla, PA[i, 0])
+        xha = max(xha, PA[i, 0])
+        yla = min(yla, PA[i, 1])
+        yha = max(yha, PA[i, 1])
+    xlb = xhb = PB[0, 0]
+    ylb = yhb = PB[0, 1]
+    for i in range(1, mb):
+        xlb = min(xlb, PB[i, 0])
+        xhb = max(xhb, PB[i, 0])
+        ylb = min(ylb, PB[i, 1])
+        yhb = max(yhb, PB[i, 1])
+    if xla > xhb + tol or xlb > xha + tol or yla > yhb + tol or ylb > yha + tol:
+        return res, nres
+    cx, cy, scale = _frame(PA, PB)
+    HA = _homog(PA, WA, cx, cy, scale)
+    HB = _homog(PB, WB, cx, cy, scale)
+    tl = tol * scale
+    if not tl > 0.0:
+        tl = 1e-300
+    inv = 1.0 / scale
+    # one allocation per column count for all scratch arrays (leading-axis slices stay C-contiguous)
+    b3 = np.empty((3 * ma + 3 * mb, 3))
+    b2 = np.empty((2 * ma + 2 * mb, 2))
+    b1 = np.empty(3 * ma + 3 * mb)
+    wa = b3[0:ma]
+    wb = b3[ma : ma + mb]
+    rnd = _ROUND * max(1.0, 1.0)  # frame is normalised to |x| < 1
+
+    # ---------------------------------------------------------------- end points
+    # candidates (t, u, dist) from each end point's projection on the other curve;
+    # an end point outside the other curve's two fat lines (widened by tol) is skipped
+    CA = b2[0:ma]
+    CB = b2[ma : ma + mb]
+    VA = b1[0:ma]
+    VB = b1[ma : ma + mb]
+    _cartesian(HA, CA, VA)
+    _cartesian(HB, CB, VB)
+    SA = b3[ma + mb : 2 * ma + mb]
+    SB = b3[2 * ma + mb : 2 * ma + 2 * mb]
+    ea = b1[ma + mb : 2 * ma + mb]
+    eb = b1[2 * ma + mb : 2 * ma + 2 * mb]
+    CPA = b2[ma + mb : 2 * ma + mb]
+    CPB = b2[2 * ma + mb : 2 * ma + 2 * mb]
+    VPA = b1[2 * ma + 2 * mb : 3 * ma + 2 * mb]
+    VPB = b1[3 * ma + 2 * mb : 3 * ma + 3 * mb]
+    ends = np.empty((8, 3))
+    nend = 0
+    # cheap rejection: an end point farther than tol outside the other curve's two fat lines
+    fa0 = fat_line_kernel(CA, False)
+    fa1 = fat_line_kernel(CA, True)
+    fb0 = fat_line_kernel(CB, False)
+    fb1 = fat_line_kernel(CB, True)
+    for which in range(4):
+        if which < 2:
+            qx = CA[na * which, 0]
+            qy = CA[na * which, 1]
+            d0 = fb0[0] * qx + fb0[1] * qy + fb0[2]
+            d1 = fb1[0] * qx + fb1[1] * qy + fb1[2]
+            if d0 < fb0[3] - tl or d0 > fb0[4] + tl or d1 < fb1[3] - tl or d1 > fb1[4] + tl:
+                continue
+        else:
+            qx = CB[nb * (which - 2), 0]
+            qy = CB[nb * (which - 2), 1]
+            d0 = fa0[0] * qx + fa0[1] * qy + fa0[2]
+            d1 = fa1[0] * qx + fa1[1] * qy + fa1[2]
+            if d0 < fa0[3] - tl or d0 > fa0[4] + tl or d1 < fa1[3] - tl or d1 > fa1[4] + tl:
+                continue
+        if which < 2:
+            te = float(which)
+            px = CA[na * which, 0]
+            py = CA[na * which, 1]
+            uu, dd = _point_on(HB, px, py, tl, SB, CPB, VPB, eb, wb)
+            # snap to an end point of b when that end also is within tol
+            for ue in (0.0, 1.0):
+                qx = CB[int(ue) * nb, 0]
+                qy = CB[int(ue) * nb, 1]
+                de = hypot(qx - px, qy - py)
+                if de <= tl and (abs(uu - ue) < 1e-6 or de <= dd):
+                    uu = ue
+                    dd = de
+            tt = te
+        else:
+            ue = float(which - 2)
+            px = CB[nb * (which - 2), 0]
+            py = CB[nb * (which - 2), 1]
+            tt, dd = _point_on(HA, px, py, tl, SA, CPA, VPA, ea, wa)
+            for te in (0.0, 1.0):
+                qx = CA[int(te) * na, 0]
+                qy = CA[int(te) * na, 1]
+                de = hypot(qx - px, qy - py)
+                if de <= tl and (abs(tt - te) < 1e-6 or de <= dd):
+                    tt = te
+                    dd = de
+            uu = ue
+        if dd <= tl:
+            dup = False
+            for k in range(nend):
+                if abs(ends[k, 0] - tt) <= 1e-9 and abs(ends[k, 1] - uu) <= 1e-9:
+                    dup = True
+                    # prefer exact end values
+                    if tt == 0.0 or tt == 1.0:
+                        ends[k, 0] = tt
+                    if uu == 0.0 or uu == 1.0:
+                        ends[k, 1] = uu
+            if not dup:
+                ends[nend, 0] = tt
+                ends[nend, 1] = uu
+                ends[nend, 2] = dd
+                nend += 1
+
+    # ---------------------------------------------------------------- overlaps
+    ov = np.empty((4, 4))
+    nov = 0
+    used = np.zeros(8, dtype=np.bool_)
+    nsamp = max(24, na * nb + 4)
+    for i in range(nend):
+        for j in range(i + 1, nend):
+            if used[i] and used[j]:
+                continue
+            if abs(ends[i, 0] - ends[j, 0]) <= 1e-9 or abs(ends[i, 1] - ends[j, 1]) <= 1e-9:
+                continue
+            if ends[i, 0] < ends[j, 0]:
+                p, q = i, j
+            else:
+                p, q = j, i
+            if _coincide(HA, HB, ends[p, 0], ends[p, 1], ends[q, 0], ends[q, 1], tl, wa, wb, nsamp):
+                ov[nov, 0] = ends[p, 0]
+                ov[nov, 1] = ends[q, 0]
+                ov[nov, 2] = ends[p, 1]
+                ov[nov, 3] = ends[q, 1]
+                nov += 1
+                used[i] = True
+                used[j] = True
+                if nov == 4:
+                    break
+        if nov == 4:
+            break
+
+    # ---------------------------------------------------------------- clipping
+    stack = np.empty((64, 4))
+    stack[0, 0] = 0.0
+    stack[0, 1] = 1.0
+    stack[0, 2] = 0.0
+    stack[0, 3] = 1.0
+    nstack = 1
+    cands = np.empty((16, 4))
+    ncand = 0
+    unres = np.empty((4, 4))
+    nunres = 0
+    epsb = max(tl, 1e-7)
+    iters = 0
+    margin = 1e-9
+    while nstack > 0:
+        nstack -= 1
+        t0 = stack[nstack, 0]
+        t1 = stack[nstack, 1]
+        u0 = stack[nstack, 2]
+        u1 = stack[nstack, 3]
+        fresh = False
+        axl = axh = ayl = ayh = bxl = bxh = byl = byh = 0.0
+        while True:
+            iters += 1
+            if iters > budget:
+                unres = _grow(unres, nunres + 1)
+                unres[nunres, 0] = t0
+                unres[nunres, 1] = t1
+                unres[nunres, 2] = u0
+                unres[nunres, 3] = u1
+                nunres += 1
+                break
+            if nov > 0 and _in_overlap(ov, nov, t0, t1, u0, u1, margin):
+                break
+            if not fresh:
+                _segment(HA, t0, t1, SA)
+                _segment(HB, u0, u1, SB)
+                axl, axh, ayl, ayh = _cartesian(SA, CA, VA)
+                bxl, bxh, byl, byh = _cartesian(SB, CB, VB)
+            fresh = False
+            if axl > bxh + tl or bxl > axh + tl or ayl > byh + tl or byl > ayh + tl:
+                break
+            exa = hypot(axh - axl, ayh - ayl)
+            exb = hypot(bxh - bxl, byh - byl)
+            if (exa <= epsb and exb <= epsb) or (t1 - t0 <= 1e-15 and u1 - u0 <= 1e-15):
+                cands = _grow(cands, ncand + 1)
+                cands[ncand, 0] = t0
+                cands[ncand, 1] = t1
+                cands[ncand, 2] = u0
+                cands[ncand, 3] = u1
+                ncand += 1
+                break
+            wt = t1 - t0
+            wu = u1 - u0
+            empty = False
+            wida = 0.0
+            widb = 0.0
+            for perp in (False, True):
+                # clip b against a's fat line
+                nx, ny, c, dmin, dmax = fat_line_kernel(CA, perp)
+                if not perp:
+                    wida = dmax - dmin
+                lo, hi = clip_range_kernel(CB, VB, nx, ny, c, dmin - tl, dmax + tl, eb)
+                if lo > hi:
+                    empty = True
+                    break
+                if lo > 0.0 or hi < 1.0:
+                    w = u1 - u0
+                    nu0 = u0 + lo * w
+                    nu1 = u0 + hi * w
+                    u0 = nu0
+                    u1 = max(nu0, nu1)
+                    _segment(HB, u0, u1, SB)
+                    bxl, bxh, byl, byh = _cartesian(SB, CB, VB)
+                # clip a against b's fat line
+                nx, ny, c, dmin, dmax = fat_line_kernel(CB, perp)
+                if not perp:
+                    widb = dmax - dmin
+                lo, hi = clip_range_kernel(CA, VA, nx, ny, c, dmin - tl, dmax + tl, ea)
+                if lo > hi:
+                    empty = True
+                    break
+                if lo > 0.0 or hi < 1.0:
+                    w = t1 - t0
+                    nt0 = t0 + lo * w
+                    nt1 = t0 + hi * w
+                    t0 = nt0
+                    t1 = max(nt0, nt1)
+                    _segment(HA, t0, t1, SA)
+                    axl, axh, ayl, ayh = _cartesian(SA, CA, VA)
+                if (t1 - t0) <= _SPLIT_RATIO * wt or (u1 - u0) <= _SPLIT_RATIO * wu:
+                    break
+            if empty:
+                break
+            if (t1 - t0) <= _SPLIT_RATIO * wt or (u1 - u0) <= _SPLIT_RATIO * wu:
+                fresh = True
+                continue
+            # stalled: a flat band contact, or split the larger sub-curve
+            if wida <= tl and widb <= tl and exa <= 4.0 * exb + tl and exb <= 4.0 * exa + tl:
+                cands = _grow(cands, ncand + 1)
+                cands[ncand, 0] = t0
+                cands[ncand, 1] = t1
+                cands[ncand, 2] = u0
+                cands[ncand, 3] = u1
+                ncand += 1
+                break
+            stack = _grow(stack, nstack + 2)
+            if (exa >= exb and t1 - t0 > 1e-15) or u1 - u0 <= 1e-15:
+                tm = 0.5 * (t0 + t1)
+                stack[nstack, 0] = tm
+                stack[nstack, 1] = t1
+                stack[nstack, 2] = u0
+                stack[nstack, 3] = u1
+                nstack += 1
+                t1 = tm
+            else:
+                um = 0.5 * (u0 + u1)
+                stack[nstack, 0] = t0
+                stack[nstack, 1] = t1
+                stack[nstack, 2] = um
+                stack[nstack, 3] = u1
+                nstack += 1
+                u1 = um
+        if iters > budget:
+            while nstack > 0:
+                nstack -= 1
+                unres = _grow(unres, nunres + 1)
+                unres[nunres, :] = stack[nstack, :]
+                nunres += 1
+
+    # ---------------------------------------------------------------- clusters
+    label = np.arange(ncand)
+    for i in range(ncand):
+        for j in range(i + 1, ncand):
+            gt = max(cands[i, 0], cands[j, 0]) - min(cands[i, 1], cands[j, 1])
+            gu = max(cands[i, 2], cands[j, 2]) - min(cands[i, 3], cands[j, 3])
+            if gt <= 1e-7 and gu <= 1e-7:
+                li = label[i]
+                while label[li] != li:
+                    li = label[li]
+                lj = label[j]
+                while label[lj] != lj:
+                    lj = label[lj]
+                if li != lj:
+                    label[max(li, lj)] = min(li, lj)
+    for i in range(ncand):
+        li = label[i]
+        while label[li] != li:
+            li = label[li]
+        label[i] = li
+
+    # points found: (t, u, dist, kind, priority)
+    pts = np.empty((8 + ncand, 5))
+    npts = 0
+    for k in range(nend):
+        pts = _grow(pts, npts + 1)
+        pts[npts, 0] = ends[k, 0]
+        pts[npts, 1] = ends[k, 1]
+        pts[npts, 2] = ends[k, 2]
+        pts[npts, 3] = -1.0  # kind decided below
+        pts[npts, 4] = 2.0  # end points win merges
+        npts += 1
+    roots = np.empty((ncand + 4, 3))
+    da = np.empty((ma, 6))
+    db = np.empty((mb, 6))
+    for root_label in range(ncand):
+        if label[root_label] != root_label:
+            continue
+        # members of this cluster
+        nmem = 0
+        for i in range(ncand):
+            if label[i] == root_label:
+                nmem += 1
+        stride = max(1, nmem // 24)
+        nroots = 0
+        bestres = math.inf
+        bt = 0.0
+        bu = 0.0
+        ct0 = math.inf
+        ct1 = -math.inf
+        cu0 = math.inf
+        cu1 = -math.inf
+        for i in range(ncand):
+            if label[i] == root_label:
+                ct0 = min(ct0, cands[i, 0])
+                ct1 = max(ct1, cands[i, 1])
+                cu0 = min(cu0, cands[i, 2])
+                cu1 = max(cu1, cands[i, 3])
+        # Newton seeds: member box centres, and for a wide cluster (a band of
+        # near-tangency that may hold several roots) points along both diagonals
+        wide = nmem >= 2 or ct1 - ct0 > 1e-6 or cu1 - cu0 > 1e-6
+        nseed = (nmem + stride - 1) // stride + (10 if wide else 0)
+        seeds = np.empty((nseed, 2))
+        ks = 0
+        cnt = 0
+        for i in range(ncand):
+            if label[i] != root_label:
+                continue
+            cnt += 1
+            if (cnt - 1) % stride != 0 or ks >= nseed:
+                continue
+            seeds[ks, 0] = 0.5 * (cands[i, 0] + cands[i, 1])
+            seeds[ks, 1] = 0.5 * (cands[i, 2] + cands[i, 3])
+            ks += 1
+        if wide:
+            for q in range(5):
+                f = (q + 0.5) / 5.0
+                seeds[ks, 0] = ct0 + f * (ct1 - ct0)
+                seeds[ks, 1] = cu0 + f * (cu1 - cu0)
+                seeds[ks + 1, 0] = ct0 + f * (ct1 - ct0)
+                seeds[ks + 1, 1] = cu1 - f * (cu1 - cu0)
+                ks += 2
+        for q in range(ks):
+            t, u, r = _newton(HA, HB, seeds[q, 0], seeds[q, 1], wa, wb, 60)
+            if r < bestres:
+                bestres = r
+                bt = t
+                bu = u
+            if r <= rnd:
+                seen = False
+                for k in range(nroots):
+                    if roots[k, 2] == 1.0 and abs(roots[k, 0] - t) <= 1e-12 and abs(roots[k, 1] - u) <= 1e-12:
+                        seen = True
+                        break
+                if seen:
+                    continue
+                # ill-conditioned root (high degree, near-tangent): double-double polish
+                _x, _y, adx, ady, _a2, _a3 = _eval(HA, t, wa)
+                _x, _y, bdx, bdy, _b2, _b3 = _eval(HB, u, wb)
+                sig = abs(adx * bdy - ady * bdx) / max(hypot(adx, ady), hypot(bdx, bdy), 1e-300)
+                cert = 1.0  # a well-conditioned root is trusted as is
+                if (na + nb) * _EPS > 1e-14 * sig:
+                    cert = 0.0
+                    t2, u2, ok = _polish_dd(HA, HB, t, u, wa, wb, da, db, 10)
+                    if ok:
+                        t = t2
+                        u = u2
+                        cert = 1.0
+                dup = False
+                for k in range(nroots):
+                    if abs(roots[k, 0] - t) <= 1e-11 and abs(roots[k, 1] - u) <= 1e-11:
+                        dup = True
+                        if cert > roots[k, 2]:  # keep the certified copy
+                            roots[k, 0] = t
+                            roots[k, 1] = u
+                            roots[k, 2] = cert
+                        break
+                if not dup:
+                    roots = _grow(roots, nroots + 1)
+                    roots[nroots, 0] = t
+                    roots[nroots, 1] = u
+                    roots[nroots, 2] = cert
+                    nroots += 1
+        if nroots == 0:
+            t, u, d = _closest(HA, HB, bt, bu, wa, wb, 60)
+            if d <= tl:
+                pts = _grow(pts, npts + 1)
+                pts[npts, 0] = t
+                pts[npts, 1] = u
+                pts[npts, 2] = d
+                pts[npts, 3] = float(KIND_TANGENT)
+                pts[npts, 4] = 0.0
+                npts += 1
+            continue
+        # certified roots explain the cluster: drop uncertified near-roots between them
+        ncert = 0
+        for k in range(nroots):
+            if roots[k, 2] == 1.0:
+                ncert += 1
+        if 0 < ncert < nroots:
+            k2 = 0
+            for k in range(nroots):
+                if roots[k, 2] == 1.0:
+                    roots[k2, 0] = roots[k, 0]
+                    roots[k2, 1] = roots[k, 1]
+                    roots[k2, 2] = roots[k, 2]
+                    k2 += 1
+            nroots = k2
+        # sort roots by t (insertion sort)
+        for i in range(1, nroots):
+            j = i
+            while j > 0 and roots[j - 1, 0] > roots[j, 0]:
+                for c3 in range(3):
+                    tmp = roots[j - 1, c3]
+                    roots[j - 1, c3] = roots[j, c3]
+                    roots[j, c3] = tmp
+                j -= 1
+        # merge neighbours with no measurable gap between them (a split double root)
+        i = 0
+        while i < nroots:
+            j = i
+            while j + 1 < nroots:
+                tm = 0.5 * (roots[j, 0] + roots[j + 1, 0])
+                um = 0.5 * (roots[j, 1] + roots[j + 1, 1])
+                mx, my, _a, _b, _c, _d = _eval(HA, tm, wa)
+                uq = um
+                # distance from a(tm) to b near um (a few Newton steps)
+                for _ in range(8):
+                    x, y, dx, dy, ddx, ddy = _eval(HB, uq, wb)
+                    fx = x - mx
+                    fy = y - my
+                    h = dx * dx + dy * dy + fx * ddx + fy * ddy
+                    if h <= 0.0:
+                        break
+                    uq = min(1.0, max(0.0, uq - (fx * dx + fy * dy) / h))
+                x, y, _a, _b, _c, _d = _eval(HB, uq, wb)
+                dq = hypot(x - mx, y - my)
+                distinct = (
+                    roots[j, 2] == 1.0
+                    and roots[j + 1, 2] == 1.0
+                    and (
+                        abs(roots[j + 1, 0] - roots[j, 0]) > 1e-13
+                        or abs(roots[j + 1, 1] - roots[j, 1]) > 1e-13
+                    )
+                )
+                if dq <= 4.0 * rnd and not distinct:
+                    j += 1
+                else:
+                    break
+            if j == i:
+                sn = _angle_sin(HA, HB, roots[i, 0], roots[i, 1], wa, wb)
+                kind = KIND_CROSSING
+                if roots[i, 2] == 1.0:
+                    # a certified (simple) root crosses, however small the angle
+                    if sn < 1e-12:
+                        kind = KIND_TANGENT
+                elif nroots == 1 and sn < 1e-7:
+                    kind = KIND_TANGENT
+                elif sn < 1e-10:
+                    kind = KIND_TANGENT
+                pts = _grow(pts, npts + 1)
+                pts[npts, 0] = roots[i, 0]
+                pts[npts, 1] = roots[i, 1]
+                pts[npts, 2] = 0.0
+                pts[npts, 3] = float(kind)
+                pts[npts, 4] = 1.0
+                npts += 1
+            else:
+                t, u, d = _closest(
+                    HA, HB, 0.5 * (roots[i, 0] + roots[j, 0]), 0.5 * (roots[i, 1] + roots[j, 1]), wa, wb, 60
+                )
+                pts = _grow(pts, npts + 1)
+                pts[npts, 0] = t
+                pts[npts, 1] = u
+                pts[npts, 2] = d
+                pts[npts, 3] = float(KIND_TANGENT)
+                pts[npts, 4] = 1.0
+                npts += 1
+            i = j + 1
+
+    # ---------------------------------------------------------------- dedupe + emit
+    keep = np.ones(npts, dtype=np.bool_)
+    for i in range(npts):
+        if not keep[i]:
+            continue
+        for j in range(i + 1, npts):
+            if not keep[j]:
+                continue
+            dt = abs(pts[i, 0] - pts[j, 0])
+            du = abs(pts[i, 1] - pts[j, 1])
+            if dt <= 1e-9 and du <= 1e-9:
+                same = True
+            elif dt <= 1e-9 or du <= 1e-9:
+                # one parameter shared: the same point only if the curve is point-like between
+                same = True
+                x0, y0, _a, _b, _c, _d = _eval(HA, pts[i, 0], wa)
+                x1, y1, _a, _b, _c, _d = _eval(HB, pts[i, 1], wb)
+                for q in range(5):
+                    f = q / 4.0
+                    x, y, _a, _b, _c, _d = _eval(HA, pts[i, 0] + f * (pts[j, 0] - pts[i, 0]), wa)
+                    x2, y2, _a, _b, _c, _d = _eval(HB, pts[i, 1] + f * (pts[j, 1] - pts[i, 1]), wb)
+                    if hypot(x - x0, y - y0) > tl or hypot(x2 - x1, y2 - y1) > tl:
+                        same = False
+                        break
+            elif (
+                dt <= 1e-3
+                and du <= 1e-3
+                and (
+                    pts[i, 3] == KIND_TANGENT
+                    or pts[j, 3] == KIND_TANGENT
+                    or pts[i, 4] == 2.0
+                    or pts[j, 4] == 2.0
+                )
+            ):
+                # one contact if the curves stay within tol all along between them
+                same = True
+                for q in range(1, 8):
+                    f = q / 8.0
+                    tm = pts[i, 0] + f * (pts[j, 0] - pts[i, 0])
+                    um = pts[i, 1] + f * (pts[j, 1] - pts[i, 1])
+                    x, y, _a, _b, _c, _d = _eval(HA, tm, wa)
+                    if _local_dist(HB, x, y, um, wb) > tl:
+                        same = False
+                        break
+            else:
+                same = False
+            if same:
+                if pts[j, 4] > pts[i, 4]:
+                    if pts[j, 3] < 0.0 and pts[i, 3] >= 0.0:
+                        pts[j, 3] = pts[i, 3]
+                    keep[i] = False
+                    break
+                else:
+                    if pts[i, 3] < 0.0 and pts[j, 3] >= 0.0:
+                        pts[i, 3] = pts[j, 3]
+                    keep[j] = False
+    for i in range(npts):
+        if not keep[i]:
+            continue
+        t = pts[i, 0]
+        u = pts[i, 1]
+        # drop points on an overlap
+        on = False
+        for k in range(nov):
+            b0 = min(ov[k, 2], ov[k, 3])
+            b1 = max(ov[k, 2], ov[k, 3])
+            if ov[k, 0] - 1e-6 <= t <= ov[k, 1] + 1e-6 and b0 - 1e-6 <= u <= b1 + 1e-6:
+                on = True
+        if on:
+            continue
+        kf = pts[i, 3]
+        if kf < 0.0:
+            sn = _angle_sin(HA, HB, t, u, wa, wb)
+            kf = float(KIND_TANGENT) if sn < 1e-7 else float(KIND_CROSSING)
+        ax, ay, _a, _b, _c, _d = _eval(HA, t, wa)
+        bx, by, _a, _b, _c, _d = _eval(HB, u, wb)
+        dist = hypot(ax - bx, ay - by) * inv
+        px = 0.5 * (ax + bx) * inv + cx
+        py = 0.5 * (ay + by) * inv + cy
+        res, nres = _add(res, nres, pair, kf, t, u, t, u, px, py, dist)
+    for k in range(nov):
+        res, nres = _add(
+            res, nres, pair, float(KIND_OVERLAP), ov[k, 0], ov[k, 2], ov[k, 1], ov[k, 3], 0.0, 0.0, 0.0
+        )
+    for k in range(nunres):
+        res, nres = _add(
+            res,
+            nres,
+            pair,
+            float(KIND_UNRESOLVED),
+            unres[k, 0],
+            unres[k, 2],
+            unres[k, 1],
+            unres[k, 3],
+            0.0,
+            0.0,
+            0.0,
+        )
+    return res, nres
