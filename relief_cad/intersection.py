@@ -60,6 +60,7 @@ from ._kernels import (
     intersect_one_kernel,
 )
 from ._types import FloatArray
+from .contacts import refine_contacts, refine_self, self_overlaps
 from .curves import RationalBezier
 from .errors import (
     BudgetExceededError,
@@ -177,6 +178,20 @@ def _planar(pa: FloatArray, wa: FloatArray, pb: FloatArray, wb: FloatArray, tol:
     return _rows_to_list(intersect_one_kernel(pa, wa, pb, wb, tol, budget))
 
 
+def _needs_refining(res: IntersectionList) -> bool:
+    """True when a result needs the contact post-pass (cheap test; the common crossing skips it)."""
+    return any(isinstance(r, Overlap) or r.kind == "tangent" or r.t in (0.0, 1.0) or r.u in (0.0, 1.0)
+               for r in res)
+
+
+def _refined(a: RationalBezier, b: RationalBezier, res: IntersectionList, tol: float) -> IntersectionList:
+    """The kernel's result decided by :func:`relief_cad.contacts.refine_contacts` (``tol <= 0``: default)."""
+    if not _needs_refining(res):
+        return res
+    ftol = default_tolerance(a, b) if tol <= 0.0 else tol
+    return IntersectionList(refine_contacts(a, b, res, ftol), res.unresolved)
+
+
 def _split_homogeneous(h: FloatArray, name: str) -> tuple[FloatArray, FloatArray]:
     h = np.ascontiguousarray(h, dtype=np.float64)
     if h.ndim != 2 or h.shape[1] != 3 or h.shape[0] < 2:
@@ -251,13 +266,16 @@ def _self_planar(p: FloatArray, w: FloatArray, tol: float, budget: int) -> Inter
     pieces.sort(key=lambda x: x[0])
     items: list[Result] = []
     boxes: list[ParameterBox] = []
+    overlaps: list[tuple[Overlap, bool]] = []
     for i in range(len(pieces)):
         for j in range(i + 1, len(pieces)):
             s0, s1, ci = pieces[i]
             r0, r1, cj = pieces[j]
-            sub = _planar(ci.control_points, ci.weights, cj.control_points, cj.weights, tol, budget)
+            sub = _refined(ci, cj, _planar(ci.control_points, ci.weights, cj.control_points,
+                                           cj.weights, tol, budget), tol)
             for r in sub:
-                if isinstance(r, Overlap):
+                if isinstance(r, Overlap):  # a stretch the curve runs along twice
+                    overlaps.append((_global_overlap(r, s0, s1, r0, r1), True))
                     continue
                 t = s0 + r.t * (s1 - s0) if r.t not in (0.0, 1.0) else (s0 if r.t == 0.0 else s1)
                 u = r0 + r.u * (r1 - r0) if r.u not in (0.0, 1.0) else (r0 if r.u == 0.0 else r1)
@@ -270,8 +288,15 @@ def _self_planar(p: FloatArray, w: FloatArray, tol: float, budget: int) -> Inter
             for bx in sub.unresolved:
                 boxes.append(ParameterBox(s0 + bx.t0 * (s1 - s0), s0 + bx.t1 * (s1 - s0),
                                           r0 + bx.u0 * (r1 - r0), r0 + bx.u1 * (r1 - r0)))
-    items.sort(key=lambda x: x.t if isinstance(x, Intersection) else x.t[0])
-    return IntersectionList(items, boxes)
+    return IntersectionList(refine_self(curve, items + self_overlaps(overlaps), tol), boxes)
+
+
+def _global_overlap(r: Overlap, s0: float, s1: float, r0: float, r1: float) -> Overlap:
+    """A piece pair's overlap in the whole curve's parameters (piece ends mapped exactly)."""
+    def on(x: float, lo: float, hi: float) -> float:
+        return lo if x == 0.0 else hi if x == 1.0 else lo + x * (hi - lo)
+
+    return Overlap(t=(on(r.t[0], s0, s1), on(r.t[1], s0, s1)), u=(on(r.u[0], r0, r1), on(r.u[1], r0, r1)))
 
 
 def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float | None = None,
@@ -339,8 +364,8 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
         return _finish(_self_planar(a.control_points, a.weights, ftol, nbudget), on_budget)
     # tol <= 0 asks the kernel for default_tolerance(a, b)
     ftol = -1.0 if tol is None else _check_tol(tol)
-    return _finish(_planar(a.control_points, a.weights, b.control_points, b.weights, ftol, nbudget,
-                           trusted=True), on_budget)
+    res = _planar(a.control_points, a.weights, b.control_points, b.weights, ftol, nbudget, trusted=True)
+    return _finish(_refined(a, b, res, ftol), on_budget)
 
 
 def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,

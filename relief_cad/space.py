@@ -51,6 +51,7 @@ from ._kernels import (
     space_pair_kernel,
 )
 from ._types import FloatArray
+from .contacts import refine_contacts, refine_self
 from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError, ToleranceError
 from .intersection import _check_budget, _check_on_budget, _finish
@@ -349,11 +350,15 @@ def intersect_space(
     _check_on_budget(on_budget)
     nbudget = _check_budget(budget)
     if b is None:
-        rows = _self_rows(a3, _check_tol(tol, a3), nbudget, k)
+        tol_s = _check_tol(tol, a3)
+        items, boxes = _rows_to_results(_self_rows(a3, tol_s, nbudget, k))
+        items = refine_self(a3, items, tol_s)
     else:
         b3 = b if b.dim == 3 else b.embedded(3)
         tol_v = -1.0 if tol is None else _check_tol(tol, a3)  # -1: kernel default
-        rows = _pair(a3.homogeneous, b3.homogeneous, tol_v, nbudget, k)
-    items, boxes = _rows_to_results(rows)
+        items, boxes = _rows_to_results(_pair(a3.homogeneous, b3.homogeneous, tol_v, nbudget, k))
+        if any(isinstance(r, Overlap) or r.kind == "tangent" or r.t in (0.0, 1.0) or r.u in (0.0, 1.0)
+               for r in items):
+            items = refine_contacts(a3, b3, items, default_tolerance(a3, b3) if tol_v <= 0.0 else tol_v)
     items.sort(key=lambda r: r.t if isinstance(r, Intersection) else r.t[0])
     return _finish(IntersectionList(items, boxes), on_budget)
