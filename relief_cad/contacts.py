@@ -33,7 +33,6 @@ only (so it is never hot), what they are:
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from fractions import Fraction
 from typing import Literal
@@ -74,7 +73,13 @@ def _foot(b: RationalBezier, pts: FloatArray, enough: float = 0.0) -> tuple[Floa
     grid = np.linspace(0.0, 1.0, n + 1)
     vals = b.evaluate(grid)
     d2 = ((pts[:, None, :] - vals[None, :, :]) ** 2).sum(axis=2)
-    u = grid[np.argmin(d2, axis=1)]
+    # Newton from the three nearest grid points (near a double point the nearest may be on the
+    # other branch), keeping the best
+    seeds = np.argsort(d2, axis=1)[:, :3]
+    m = pts.shape[0]
+    pts = np.repeat(pts, seeds.shape[1], axis=0)
+    u = grid[seeds.ravel()]
+    d2 = d2[np.repeat(np.arange(m), seeds.shape[1]), seeds.ravel()][:, None]
     dist = np.sqrt(d2.min(axis=1))
     hod = b.hodograph()
     delta = 0.5 / n
@@ -83,7 +88,8 @@ def _foot(b: RationalBezier, pts: FloatArray, enough: float = 0.0) -> tuple[Floa
         d1 = hod.evaluate(u)
         step = (r * d1).sum(axis=1) / np.maximum((d1 * d1).sum(axis=1), 1e-300)
         # the Newton step, and two shrinking probes that leave stationary points (a fold tip)
-        for trial in (np.clip(u - step, 0.0, 1.0), np.clip(u + delta, 0.0, 1.0), np.clip(u - delta, 0.0, 1.0)):
+        for trial in (np.clip(u - step, 0.0, 1.0), np.clip(u + delta, 0.0, 1.0),
+                      np.clip(u - delta, 0.0, 1.0)):
             tdist = np.sqrt(((b.evaluate(trial) - pts) ** 2).sum(axis=1))
             better = tdist < dist
             u = np.where(better, trial, u)
@@ -91,7 +97,9 @@ def _foot(b: RationalBezier, pts: FloatArray, enough: float = 0.0) -> tuple[Floa
         delta *= 0.5
         if np.all(dist <= enough):
             break
-    return u, dist
+    k = seeds.shape[1]
+    best = np.argmin(dist.reshape(m, k), axis=1)
+    return u.reshape(m, k)[np.arange(m), best], dist.reshape(m, k)[np.arange(m), best]
 
 
 def _piece(c: RationalBezier, s0: float, s1: float) -> RationalBezier:
@@ -116,26 +124,47 @@ def _coincide(a: RationalBezier, b: RationalBezier, t0: float, t1: float, u0: fl
 
 
 # ---------------------------------------------------------------------------- overlaps
+def _end_nodes(a: RationalBezier, b: RationalBezier, tol: float) -> set[tuple[float, float]]:
+    """Contacts at the curves' end points (exact where the end points are the same point)."""
+    out: set[tuple[float, float]] = set()
+    ends_b = (b.control_points[0], b.control_points[-1])
+    for t, pt in ((0.0, a.control_points[0]), (1.0, a.control_points[-1])):
+        exact = [u for u, q in zip((0.0, 1.0), ends_b, strict=True) if np.array_equal(pt, q)]
+        if exact:
+            out.update((t, u) for u in exact)
+            continue
+        fu, fd = _foot(b, pt[None, :], 0.25 * tol)
+        if fd[0] <= tol:
+            out.add((t, float(fu[0])))
+    for u, pt in ((0.0, ends_b[0]), (1.0, ends_b[1])):
+        if any(q[1] == u for q in out):
+            continue
+        ft, fd = _foot(a, pt[None, :], 0.25 * tol)
+        if fd[0] <= tol:
+            out.add((float(ft[0]), u))
+    return out
+
+
 def _chains(a: RationalBezier, b: RationalBezier, pts: list[Intersection], ovs: list[Overlap],
-            tol: float) -> list[Overlap]:
-    """Chains of contacts with coincident stretches between them, as overlaps."""
+            tol: float, ends: bool = True) -> list[Overlap]:
+    """Chains of contacts with coincident stretches between them, as overlaps.
+
+    From each contact, the next one (in ``t``) joined to it by a coincident stretch extends the
+    chain; contacts in between that lie on another branch (a loop's double point) are passed over.
+    """
     nodes = sorted({(p.t, p.u) for p in pts} | {(o.t[0], o.u[0]) for o in ovs}
-                   | {(o.t[1], o.u[1]) for o in ovs})
+                   | {(o.t[1], o.u[1]) for o in ovs} | (_end_nodes(a, b, tol) if ends else set()))
     linked = {((o.t[0], o.u[0]), (o.t[1], o.u[1])) for o in ovs}
     out: list[Overlap] = []
     i = 0
     while i < len(nodes):
         start = cur = nodes[i]
-        j = i + 1
-        while j < len(nodes):
-            group = [q for q in nodes[j:] if q[0] == nodes[j][0]]
-            group.sort(key=lambda q: abs(q[1] - cur[1]))
-            nxt = next((q for q in group if (cur, q) in linked
-                        or _coincide(a, b, cur[0], q[0], cur[1], q[1], tol)), None)
+        while True:
+            nxt = next((q for q in nodes if q[0] > cur[0] and ((cur, q) in linked
+                        or _coincide(a, b, cur[0], q[0], cur[1], q[1], tol))), None)
             if nxt is None:
                 break
             cur = nxt
-            j = nodes.index(nxt) + 1
         if cur != start:
             out.append(Overlap(t=(start[0], cur[0]), u=(start[1], cur[1])))
             i = nodes.index(cur) + 1
@@ -235,7 +264,9 @@ def refine_self(c: RationalBezier, items: Sequence[Result], tol: float) -> list[
     if not ((len(pts) >= 2 and any(p.kind == "tangent" for p in pts)) or (ovs and pts)):
         return list(items)
     found = []
-    for o in _chains(c, c, pts, ovs, tol) + ovs:
+    for o in _chains(c, c, pts, ovs, tol, ends=False) + ovs:
+        if o.t == o.u:
+            continue  # the curve against itself, not a retraced stretch
         t1, u1 = o.t[1], o.u[1]
         m = _fold(c, t1, u1) if u1 > t1 else None
         if m is not None and m > t1 and _coincide(c, c, t1, m, u1, m, tol):
@@ -297,7 +328,8 @@ def curve_direction(c: RationalBezier, t: float, side: Literal[1, -1] = 1) -> Fl
         d = q - pts[0]
         norm = float(np.hypot.reduce(d))
         if norm > 4e-16 * scale:
-            return d / norm
+            unit: FloatArray = d / norm
+            return unit
     return np.zeros(c.dim)
 
 
@@ -339,7 +371,7 @@ def _exact(c: RationalBezier, t: float) -> tuple[list[Fraction], list[Fraction]]
     w = val[0, -1]
     dw = dval[0, -1]
     pt = [x / w for x in val[0, :-1]]
-    der = [(dx - x * dw) / w for dx, x in zip(dval[0, :-1], pt)]
+    der = [(dx - x * dw) / w for dx, x in zip(dval[0, :-1], pt, strict=True)]
     return pt, der
 
 
@@ -382,42 +414,55 @@ def _merge_clusters(a: RationalBezier, b: RationalBezier, pts: list[Intersection
 
 
 # ---------------------------------------------------------------------------- tangent location
-def _tangency(a: RationalBezier, b: RationalBezier, t: float, order: int) -> tuple[float, float]:
-    """Tangency function (order 1) or curvature difference (order 2) at ``t``; and the foot ``u``."""
-    u = float(_foot(b, a.evaluate(np.array([t])))[0][0])
-    da, db = a.derivative(t), b.derivative(u)
-    if order == 1:
-        na, nb = math.hypot(*da), math.hypot(*db)
-        return float(da[0] * db[1] - da[1] * db[0]) / max(na * nb, 1e-300), u
-    dda, ddb = a.hodograph().derivative(t), b.hodograph().derivative(u)
-    ka = float(da[0] * dda[1] - da[1] * dda[0]) / max(math.hypot(*da) ** 3, 1e-300)
-    kb = float(db[0] * ddb[1] - db[1] * ddb[0]) / max(math.hypot(*db) ** 3, 1e-300)
-    same = float(da @ db) >= 0.0
-    return (ka - kb) if same else (ka + kb), u
+def _tangency(a: RationalBezier, b: RationalBezier, ts: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """Tangency function ``a'(t) × b'(u(t)) / (|a'| |b'|)`` at ``ts`` (m,), and the foot points."""
+    u, _ = _foot(b, a.evaluate(ts))
+    da, db = a.derivative(ts), b.derivative(u)
+    h = (da[:, 0] * db[:, 1] - da[:, 1] * db[:, 0]) / np.maximum(
+        np.hypot(da[:, 0], da[:, 1]) * np.hypot(db[:, 0], db[:, 1]), 1e-300)
+    return h, u
+
+
+def _contact_root(fit: np.polynomial.Polynomial) -> float | None:
+    """The root near 0 of the lowest derivative of ``fit`` that has a simple root there.
+
+    A contact of order ``m`` makes the tangency function vanish to order ``m - 1``; its
+    ``(m - 2)``-th derivative has a simple root there, well conditioned even where the function
+    itself is below rounding (deflation by differentiation).
+    """
+    grid = np.linspace(-1.0, 1.0, 41)
+    for j in range(4):
+        q = fit.deriv(j) if j else fit
+        dq = q.deriv()
+        scale = float(np.abs(dq(grid)).max())
+        roots = [float(r.real) for r in q.roots() if abs(r.imag) < 1e-9 and abs(r.real) < 0.05]
+        roots.sort(key=abs)
+        if roots and scale > 0.0 and abs(float(dq(roots[0]))) >= 1e-3 * scale:
+            return roots[0]
+    return None
 
 
 def _locate(a: RationalBezier, b: RationalBezier, p: Intersection, tol: float) -> Intersection:
-    """Place an interior tangent contact on the root of the derivative system (bisection)."""
-    if a.dim != 2 or not (0.0 < p.t < 1.0 and 0.0 < p.u < 1.0):
+    """Place an interior tangent contact on the root of the derivative system.
+
+    The tangency function is sampled on a window of half-width 1e-2 around the kernel's estimate
+    (where it is far above rounding), fitted by a degree-10 polynomial, and the contact is the
+    simple root of its lowest derivative that has one (see :func:`_contact_root`).
+    """
+    w = 1e-2
+    if a.dim != 2 or not (w < p.t < 1.0 - w and 0.0 < p.u < 1.0):
         return p
-    w = 1e-5
-    lo, hi = max(p.t - w, 0.0), min(p.t + w, 1.0)
-    for order in (1, 2):
-        flo, fhi = _tangency(a, b, lo, order)[0], _tangency(a, b, hi, order)[0]
-        if flo * fhi < 0.0:
-            for _ in range(60):
-                mid = 0.5 * (lo + hi)
-                fm = _tangency(a, b, mid, order)[0]
-                if mid in (lo, hi) or fm == 0.0:
-                    break
-                lo, hi, flo = (mid, hi, fm) if fm * flo > 0.0 else (lo, mid, flo)
-            t = 0.5 * (lo + hi)
-            u = _tangency(a, b, t, order)[1]
-            gap = float(np.hypot.reduce(a.evaluate(t) - b.evaluate(u)))
-            if gap <= max(tol, p.distance) and abs(t - p.t) < w:
-                return Intersection(t, u, 0.5 * (a.evaluate(t) + b.evaluate(u)), p.kind, gap)
-            return p
-    return p
+    s = np.cos(np.pi * (np.arange(21) + 0.5) / 21)
+    h, _ = _tangency(a, b, p.t + w * s)
+    root = _contact_root(np.polynomial.Polynomial.fit(s, h, 10, domain=[-1.0, 1.0]))
+    if root is None:
+        return p
+    t = p.t + w * root
+    u = float(_foot(b, a.evaluate(np.array([t])))[0][0])
+    gap = float(np.hypot.reduce(a.evaluate(t) - b.evaluate(u)))
+    if gap > max(tol, p.distance) or abs(u - p.u) > 1e-4:
+        return p
+    return Intersection(t, u, 0.5 * (a.evaluate(t) + b.evaluate(u)), p.kind, gap)
 
 
 # ---------------------------------------------------------------------------- entry point

@@ -24,6 +24,7 @@ BENCHMARKS = {
     "planar": "workbench.bench_planar",
     "cad": "workbench.bench_cad",
     "space": "workbench.bench_space",
+    "families": "workbench.bench_families",
 }
 
 
