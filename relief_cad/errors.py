@@ -28,6 +28,7 @@ __all__ = [
     "ShapeError",
     "SpanError",
     "ToleranceError",
+    "ToleranceTypeError",
     "UnsupportedCurveError",
     "WeightError",
 ]
@@ -155,6 +156,18 @@ class InputTypeError(ReliefCadError, TypeError):
     Traceback (most recent call last):
     ...
     relief_cad.errors.InputTypeError: the curve to lift should be a RationalBezier, not str
+    """
+
+
+class ToleranceTypeError(ToleranceError, InputTypeError):
+    """A tolerance of the wrong Python type (not a real number): both a ``ValueError`` and a ``TypeError``.
+
+    >>> from relief_cad import RationalBezier, intersect
+    >>> line = RationalBezier([[0, 0], [1, 1]])
+    >>> intersect(line, line, tol="1e-9")
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ToleranceTypeError: tol should be a distance > 0 in model units (a float), not str
     """
 
 

@@ -45,12 +45,12 @@ apart); tangent contacts to about ``sqrt(eps)`` (1e-8).
 from __future__ import annotations
 
 import gc
-import math
 from collections.abc import Iterable, Sequence
-from typing import Any, Literal
+from typing import Literal
 
 import numpy as np
 
+from ._checks import DEFAULT_BUDGET, OnBudget, check_budget, check_curve, check_on_budget, check_tol
 from ._kernels import (
     KIND_CROSSING,
     KIND_OVERLAP,
@@ -63,14 +63,13 @@ from ._types import FloatArray
 from .contacts import refine_contacts, refine_self, self_overlaps
 from .curves import RationalBezier
 from .errors import (
-    BudgetExceededError,
     InputTypeError,
     InvalidInputError,
     NonFiniteError,
     ShapeError,
-    ToleranceError,
 )
-from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result
+from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
+from .space import intersect_space
 from .tolerances import default_tolerance
 
 __all__ = [
@@ -80,45 +79,7 @@ __all__ = [
     "intersect_many",
 ]
 
-# Near-tangent crossings (angles down to 1e-8 at the default tolerance) keep the curves within tol
-# over a stretch that clipping can only subdivide: measured, 300 000 iterations (0.4 s at worst)
-# resolve every such case of a random family; the default leaves headroom and still bounds the work.
-DEFAULT_BUDGET: int = 500_000
-"""Default cap on clipping iterations per curve pair (each clip or split is one)."""
-
-OnBudget = Literal["raise", "return"]
-
 _KINDS: dict[int, Literal["crossing", "tangent"]] = {KIND_CROSSING: "crossing", KIND_TANGENT: "tangent"}
-
-
-def _check_curve(c: Any, name: str) -> RationalBezier:
-    if not isinstance(c, RationalBezier):
-        raise InputTypeError(f"{name} should be a RationalBezier, not {type(c).__name__}")
-    return c
-
-
-def _check_tol(tol: Any) -> float:
-    if isinstance(tol, bool) or not isinstance(tol, (int, float, np.floating, np.integer)):
-        raise ToleranceError(f"tol should be a finite distance > 0 (a float), not {type(tol).__name__}")
-    value = float(tol)
-    if not math.isfinite(value) or value <= 0.0:
-        raise ToleranceError(f"tol should be a finite distance > 0, not {value!r}")
-    return value
-
-
-def _check_budget(budget: Any) -> int:
-    if budget is None:
-        return DEFAULT_BUDGET
-    if isinstance(budget, bool) or not isinstance(budget, (int, np.integer)):
-        raise InputTypeError(f"budget should be an int >= 1, not {type(budget).__name__}")
-    if budget < 1:
-        raise InvalidInputError(f"budget should be an int >= 1, not {budget}")
-    return int(budget)
-
-
-def _check_on_budget(on_budget: Any) -> None:
-    if on_budget not in ("raise", "return"):
-        raise InvalidInputError(f"on_budget should be 'raise' or 'return', not {on_budget!r}")
 
 
 def _point(t: float, u: float, point: FloatArray, kind: Literal["crossing", "tangent"],
@@ -148,17 +109,6 @@ def _rows_to_list(rows: FloatArray) -> IntersectionList:
     if len(items) > 1:
         items.sort(key=lambda x: x.t[0] if isinstance(x, Overlap) else x.t)
     return IntersectionList(items, boxes)
-
-
-def _finish(result: IntersectionList, on_budget: str) -> IntersectionList:
-    if result.unresolved and on_budget == "raise":
-        raise BudgetExceededError(
-            f"the iteration budget ran out with {len(result.unresolved)} parameter box(es) "
-            "unresolved; pass a larger budget= or on_budget='return'",
-            partial=list(result),
-            unresolved=list(result.unresolved),
-        )
-    return result
 
 
 def _ro(arr: FloatArray) -> FloatArray:
@@ -349,23 +299,21 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
     >>> intersect(c, RationalBezier([[0, 0.5], [2, 0.5]]))[0].kind
     'tangent'
     """
-    _check_curve(a, "a")
+    check_curve(a, "a")
     if b is not None:
-        _check_curve(b, "b")
-    _check_on_budget(on_budget)
-    nbudget = _check_budget(budget)
+        check_curve(b, "b")
+    check_on_budget(on_budget)
+    nbudget = check_budget(budget)
     if a.dim == 3 or (b is not None and b.dim == 3):
-        from .space import intersect_space
-
         result: IntersectionList = intersect_space(a, b, tol=tol, budget=budget, on_budget=on_budget)
         return result
     if b is None:
-        ftol = default_tolerance(a) if tol is None else _check_tol(tol)
-        return _finish(_self_planar(a.control_points, a.weights, ftol, nbudget), on_budget)
+        ftol = check_tol(tol) or default_tolerance(a)
+        return finish(_self_planar(a.control_points, a.weights, ftol, nbudget), on_budget)
     # tol <= 0 asks the kernel for default_tolerance(a, b)
-    ftol = -1.0 if tol is None else _check_tol(tol)
+    ftol = check_tol(tol) or -1.0
     res = _planar(a.control_points, a.weights, b.control_points, b.weights, ftol, nbudget, trusted=True)
-    return _finish(_refined(a, b, res, ftol), on_budget)
+    return finish(_refined(a, b, res, ftol), on_budget)
 
 
 def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
@@ -406,7 +354,7 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     >>> [(r.t, r.u) for r in intersect_line(c, (0, 0.75), (1, 0))]
     [(0.25, 0.5), (0.75, 1.5)]
     """
-    _check_curve(curve, "curve")
+    check_curve(curve, "curve")
     if curve.dim != 2:
         raise ShapeError(f"intersect_line needs a planar curve (dim 2), not dim {curve.dim}")
     p = np.asarray(point, dtype=np.float64)
@@ -418,10 +366,10 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     dd = float(d @ d)
     if dd == 0.0:
         raise InvalidInputError("direction should be nonzero, not (0, 0)")
-    _check_on_budget(on_budget)
-    nbudget = _check_budget(budget)
+    check_on_budget(on_budget)
+    nbudget = check_budget(budget)
     pts = curve.control_points
-    ftol = default_tolerance(curve, p[None, :]) if tol is None else _check_tol(tol)
+    ftol = check_tol(tol) or default_tolerance(curve, p[None, :])
     s = (pts - p) @ d / dd
     lo = float(min(s.min(), 0.0))
     hi = float(max(s.max(), 0.0))
@@ -436,7 +384,7 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
             pt = curve.evaluate(r.t) if r.kind == "crossing" else r.point
             su = float((np.asarray(pt) - p) @ d / dd)
             items.append(Intersection(r.t, su, r.point, r.kind, r.distance))
-    return _finish(IntersectionList(items, res.unresolved), on_budget)
+    return finish(IntersectionList(items, res.unresolved), on_budget)
 
 
 def _collect(res: FloatArray, points: FloatArray, out_items: list[list[Result]],
@@ -481,9 +429,9 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
     [[0.5], [0.5]]
     """
     plist = list(pairs)
-    _check_on_budget(on_budget)
-    nbudget = _check_budget(budget)
-    ftol = None if tol is None else _check_tol(tol)
+    check_on_budget(on_budget)
+    nbudget = check_budget(budget)
+    ftol = check_tol(tol)
     planar: list[int] = []
     out: list[IntersectionList | None] = [None] * len(plist)
     cps: list[FloatArray] = []
@@ -493,9 +441,9 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
             raise InputTypeError(f"pairs[{k}] should be a tuple (a, b), not {type(pr).__name__}")
         a, b = pr
         if not isinstance(a, RationalBezier):
-            _check_curve(a, f"pairs[{k}][0]")
+            check_curve(a, f"pairs[{k}][0]")
         if not isinstance(b, RationalBezier):
-            _check_curve(b, f"pairs[{k}][1]")
+            check_curve(b, f"pairs[{k}][1]")
         pa = a.control_points
         pb = b.control_points
         if pa.shape[1] == 2 and pb.shape[1] == 2:
@@ -535,5 +483,5 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
                 items.sort(key=lambda x: x.t[0] if isinstance(x, Overlap) else x.t)
             boxes = out_boxes[j]
             out[k] = (IntersectionList(items) if not boxes
-                      else _finish(IntersectionList(items, boxes), on_budget))
+                      else finish(IntersectionList(items, boxes), on_budget))
     return [o if o is not None else IntersectionList() for o in out]

@@ -21,6 +21,7 @@ from typing import Literal, Union
 import numpy as np
 
 from ._types import FloatArray
+from .errors import BudgetExceededError
 
 __all__ = [
     "Intersection",
@@ -28,6 +29,7 @@ __all__ = [
     "Overlap",
     "ParameterBox",
     "Result",
+    "finish",
 ]
 
 ContactKind = Literal["crossing", "tangent"]
@@ -169,3 +171,26 @@ class IntersectionList(list[Result]):
         1
         """
         return [r for r in self if isinstance(r, Overlap)]
+
+
+def finish(result: IntersectionList, on_budget: str) -> IntersectionList:
+    """Return ``result``, or raise when a budget left boxes open and ``on_budget == "raise"``.
+
+    Raises
+    ------
+    BudgetExceededError
+        Carrying the results found (``.partial``) and the open boxes (``.unresolved``).
+
+    Examples
+    --------
+    >>> finish(IntersectionList([]), "raise").complete
+    True
+    """
+    if result.unresolved and on_budget == "raise":
+        raise BudgetExceededError(
+            f"the iteration budget ran out with {len(result.unresolved)} parameter box(es) "
+            "unresolved; pass a larger budget= or on_budget='return'",
+            partial=list(result),
+            unresolved=list(result.unresolved),
+        )
+    return result

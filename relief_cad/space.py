@@ -42,6 +42,7 @@ from typing import Literal
 
 import numpy as np
 
+from ._checks import check_budget, check_on_budget, check_tol
 from ._kernels import (
     KIND_OVERLAP,
     KIND_UNRESOLVED,
@@ -53,10 +54,9 @@ from ._kernels import (
 from ._types import FloatArray
 from .contacts import refine_contacts, refine_self
 from .curves import RationalBezier
-from .errors import BudgetExceededError, InputTypeError, ToleranceError
-from .intersection import _check_budget, _check_on_budget, _finish
+from .errors import BudgetExceededError, InputTypeError
 from .relief import ReliefPerspective, central_projection
-from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result
+from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
 from .tolerances import default_tolerance
 
 __all__ = ["ReliefFrame", "ReliefScheme", "intersect_space", "relief_scheme"]
@@ -276,18 +276,6 @@ def _self_rows(curve: RationalBezier, tol: float, budget: int, k: float) -> Floa
     return np.array(keep)
 
 
-def _check_tol(tol: float | None, curve: RationalBezier) -> float:
-    if tol is None:
-        return default_tolerance(curve)
-    try:
-        value = float(tol)
-    except (TypeError, ValueError) as exc:
-        raise InputTypeError(f"tol should be a distance (a real number), not {type(tol).__name__}") from exc
-    if not math.isfinite(value) or value <= 0.0:
-        raise ToleranceError(f"tol should be a finite distance > 0 in model units, not {tol!r}")
-    return value
-
-
 def intersect_space(
     a: RationalBezier,
     b: RationalBezier | None = None,
@@ -347,18 +335,19 @@ def intersect_space(
             f"{type(a).__name__} and {type(b).__name__}"
         )
     a3 = a if a.dim == 3 else a.embedded(3)
-    _check_on_budget(on_budget)
-    nbudget = _check_budget(budget)
+    check_on_budget(on_budget)
+    nbudget = check_budget(budget)
+    ftol = check_tol(tol)
     if b is None:
-        tol_s = _check_tol(tol, a3)
+        tol_s = default_tolerance(a3) if ftol is None else ftol
         items, boxes = _rows_to_results(_self_rows(a3, tol_s, nbudget, k))
         items = refine_self(a3, items, tol_s)
     else:
         b3 = b if b.dim == 3 else b.embedded(3)
-        tol_v = -1.0 if tol is None else _check_tol(tol, a3)  # -1: kernel default
+        tol_v = -1.0 if ftol is None else ftol  # -1: kernel default
         items, boxes = _rows_to_results(_pair(a3.homogeneous, b3.homogeneous, tol_v, nbudget, k))
         if any(isinstance(r, Overlap) or r.kind == "tangent" or r.t in (0.0, 1.0) or r.u in (0.0, 1.0)
                for r in items):
             items = refine_contacts(a3, b3, items, default_tolerance(a3, b3) if tol_v <= 0.0 else tol_v)
     items.sort(key=lambda r: r.t if isinstance(r, Intersection) else r.t[0])
-    return _finish(IntersectionList(items, boxes), on_budget)
+    return finish(IntersectionList(items, boxes), on_budget)
