@@ -386,13 +386,18 @@ def _side(a: RationalBezier, b: RationalBezier, t: float, u_guess: float) -> int
 
 
 def _double_root(a: RationalBezier, b: RationalBezier, p: Intersection, q: Intersection) -> bool:
-    """True when two close contacts are one double root (no sign change of the distance)."""
+    """True when two close contacts are one double root (no sign change of the distance).
+
+    The signed distance is taken exactly at 1/4, 1/2 and 3/4 of the way from ``p`` to ``q`` and one
+    gap beyond each; one double root leaves every nonzero sign the same, two simple roots flip
+    the sign between them.
+    """
     gap = q.t - p.t
     if gap <= 0.0:
         return True
-    mid = _side(a, b, 0.5 * (p.t + q.t), 0.5 * (p.u + q.u))
-    out = [_side(a, b, t, u) for t, u in ((p.t - gap, p.u), (q.t + gap, q.u)) if 0.0 <= t <= 1.0]
-    return mid != 0 and all(s == mid for s in out if s != 0)
+    inner = {_side(a, b, p.t + f * gap, p.u + f * (q.u - p.u)) for f in (0.25, 0.5, 0.75)} - {0}
+    outer = {_side(a, b, t, u) for t, u in ((p.t - gap, p.u), (q.t + gap, q.u)) if 0.0 <= t <= 1.0} - {0}
+    return not inner or not outer or inner == outer
 
 
 def _merge_clusters(a: RationalBezier, b: RationalBezier, pts: list[Intersection]) -> list[Intersection]:

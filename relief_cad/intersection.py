@@ -30,11 +30,23 @@ The planar solver (one numba kernel, :mod:`relief_cad._kernels`):
    root as far as double-double can tell) is ``"tangent"`` when ``|sin| < 1e-7``
    (isolated) or ``< 1e-10`` (in a cluster of several roots); so an osculating
    contact that crosses (``y = x**3`` against ``y = 0``) is ``"tangent"``. End
-   point contacts are ``"tangent"`` when ``|sin| < 1e-7``.
+   point contacts are ``"tangent"`` when ``|sin| < 1e-7``;
+6. a post-pass (:mod:`relief_cad.contacts`, plain Python on the candidates only;
+   skipped when every result is an interior crossing) decides by geometry:
+   consecutive contacts joined by a stretch within ``tol`` both ways are one
+   :class:`~relief_cad.Overlap` (whatever the parameterisations: doubled control
+   points, elevated or reversed copies, retracing curves); two contacts closer than
+   1e-6 in both parameters are one double root ("tangent") when the exact sign of the
+   signed distance (the binary64 data taken as exact rationals) does not change
+   between them, else two simple roots ("crossing"); end meetings where a derivative
+   vanishes are classified by the first non-vanishing derivatives (tangent when
+   ``|sin| < 1e-7``, so a fold-back at 180 degrees is tangent); interior tangent
+   contacts are placed at the simple root of the lowest derivative of the tangency
+   function that has one (osculating contacts to 1e-9 on exact data).
 
 Accuracy: transversal crossings to a few ulps of the parameters (1e-13 on the
-certified corpus, including degree-20 Chebyshev-like curves and crossings 1e-8
-apart); tangent contacts to about ``sqrt(eps)`` (1e-8).
+certified corpora, including degree-20 Chebyshev-like curves and crossings 1e-8
+apart); tangent contacts to about 1e-9, including osculating ones.
 
 >>> from relief_cad.curves import RationalBezier
 >>> loop = RationalBezier([[0, 0], [3, 3], [-1, 3], [2, 0]])
