@@ -47,6 +47,7 @@ __all__ = [
     "CLUSTER_GAP",
     "END_TANGENT_SIN",
     "curve_direction",
+    "needs_refining",
     "refine_contacts",
     "refine_self",
     "self_overlaps",
@@ -471,6 +472,30 @@ def _locate(a: RationalBezier, b: RationalBezier, p: Intersection, tol: float) -
 
 
 # ---------------------------------------------------------------------------- entry point
+def _singular_end(c: RationalBezier, t: float) -> bool:
+    if t != 0.0 and t != 1.0:
+        return False
+    pts = c.control_points
+    return bool(np.all(pts[0] == pts[1])) if t == 0.0 else bool(np.all(pts[-1] == pts[-2]))
+
+
+def needs_refining(a: RationalBezier, b: RationalBezier, items: Sequence[Result]) -> bool:
+    """True when :func:`refine_contacts` can change ``items`` (a cheap test, run on every pair).
+
+    Interior crossings, and end meetings where both derivatives are nonzero, are final as the
+    kernel gives them; overlaps, tangent contacts and end meetings at a repeated end control
+    point are not.
+
+    Examples
+    --------
+    >>> line = RationalBezier([[0, 0], [1, 1]])
+    >>> needs_refining(line, line, [Intersection(0.5, 0.5, line(0.5), "crossing")])
+    False
+    """
+    return any(isinstance(r, Overlap) or r.kind == "tangent" or _singular_end(a, r.t)
+               or _singular_end(b, r.u) for r in items)
+
+
 def refine_contacts(a: RationalBezier, b: RationalBezier, items: Sequence[Result],
                     tol: float) -> list[Result]:
     """Return the kernel's candidate contacts of ``a`` and ``b``, decided by geometry.

@@ -72,7 +72,7 @@ from ._kernels import (
     intersect_one_kernel,
 )
 from ._types import FloatArray
-from .contacts import refine_contacts, refine_self, self_overlaps
+from .contacts import needs_refining, refine_contacts, refine_self, self_overlaps
 from .curves import RationalBezier
 from .errors import (
     InputTypeError,
@@ -140,15 +140,9 @@ def _planar(pa: FloatArray, wa: FloatArray, pb: FloatArray, wb: FloatArray, tol:
     return _rows_to_list(intersect_one_kernel(pa, wa, pb, wb, tol, budget))
 
 
-def _needs_refining(res: IntersectionList) -> bool:
-    """True when a result needs the contact post-pass (cheap test; the common crossing skips it)."""
-    return any(isinstance(r, Overlap) or r.kind == "tangent" or r.t in (0.0, 1.0) or r.u in (0.0, 1.0)
-               for r in res)
-
-
 def _refined(a: RationalBezier, b: RationalBezier, res: IntersectionList, tol: float) -> IntersectionList:
     """The kernel's result decided by :func:`relief_cad.contacts.refine_contacts` (``tol <= 0``: default)."""
-    if not _needs_refining(res):
+    if not needs_refining(a, b, res):
         return res
     ftol = default_tolerance(a, b) if tol <= 0.0 else tol
     return IntersectionList(refine_contacts(a, b, res, ftol), res.unresolved)

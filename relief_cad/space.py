@@ -52,7 +52,7 @@ from ._kernels import (
     space_pair_kernel,
 )
 from ._types import FloatArray
-from .contacts import refine_contacts, refine_self
+from .contacts import needs_refining, refine_contacts, refine_self
 from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError
 from .relief import ReliefPerspective, central_projection
@@ -346,8 +346,7 @@ def intersect_space(
         b3 = b if b.dim == 3 else b.embedded(3)
         tol_v = -1.0 if ftol is None else ftol  # -1: kernel default
         items, boxes = _rows_to_results(_pair(a3.homogeneous, b3.homogeneous, tol_v, nbudget, k))
-        if any(isinstance(r, Overlap) or r.kind == "tangent" or r.t in (0.0, 1.0) or r.u in (0.0, 1.0)
-               for r in items):
+        if needs_refining(a3, b3, items):
             items = refine_contacts(a3, b3, items, default_tolerance(a3, b3) if tol_v <= 0.0 else tol_v)
     items.sort(key=lambda r: r.t if isinstance(r, Intersection) else r.t[0])
     return finish(IntersectionList(items, boxes), on_budget)
