@@ -84,7 +84,9 @@ def _foot(b: RationalBezier, pts: FloatArray, enough: float = 0.0) -> tuple[Floa
     dist = np.sqrt(d2.min(axis=1))
     hod = b.hodograph()
     delta = 0.5 / n
-    for _ in range(_NEWTON_STEPS):  # safeguarded: a step is kept only where it brings b closer
+    stalled = 0
+    for _ in range(_NEWTON_STEPS):
+        before = dist  # safeguarded: a step is kept only where it brings b closer
         r = b.evaluate(u) - pts
         d1 = hod.evaluate(u)
         step = (r * d1).sum(axis=1) / np.maximum((d1 * d1).sum(axis=1), 1e-300)
@@ -98,9 +100,24 @@ def _foot(b: RationalBezier, pts: FloatArray, enough: float = 0.0) -> tuple[Floa
         delta *= 0.5
         if np.all(dist <= enough):
             break
+        stalled = stalled + 1 if np.all(dist >= before * (1.0 - 1e-6)) else 0
+        if stalled >= 3:  # every point at its local minimum (the probes gain nothing more)
+            break
     k = seeds.shape[1]
     best = np.argmin(dist.reshape(m, k), axis=1)
     return u.reshape(m, k)[np.arange(m), best], dist.reshape(m, k)[np.arange(m), best]
+
+
+def _surely_far(b: RationalBezier, pts: FloatArray, tol: float) -> bool:
+    """True when some point of ``pts`` (m, d) is certainly farther than ``tol`` from ``b``.
+
+    Grid test only (no Newton): a point of ``b`` lies within one grid chord of a grid point, so
+    a grid distance above ``tol`` plus the longest chord is a certain miss.
+    """
+    grid = b.evaluate(np.linspace(0.0, 1.0, 8 * (b.degree + 1) + 1))
+    chord = float(np.sqrt((np.diff(grid, axis=0) ** 2).sum(axis=1)).max())
+    d2 = ((pts[:, None, :] - grid[None, :, :]) ** 2).sum(axis=2).min(axis=1)
+    return bool(np.any(np.sqrt(d2) > tol + chord))
 
 
 def _piece(c: RationalBezier, s0: float, s1: float) -> RationalBezier:
@@ -114,6 +131,9 @@ def _coincide(a: RationalBezier, b: RationalBezier, t0: float, t1: float, u0: fl
         return False
     pa = _piece(a, t0, t1)
     pb = _piece(b, min(u0, u1), max(u0, u1))
+    quick = np.array([0.25, 0.5, 0.75])
+    if _surely_far(pb, pa.evaluate(quick), tol) or _surely_far(pa, pb.evaluate(quick), tol):
+        return False
     m = _SAMPLES_PER_DEGREE * (a.degree + b.degree) + 5
     s = (np.arange(1, m + 1) - 0.5) / m
     for src, dst in ((pa, pb), (pb, pa)):
@@ -134,11 +154,13 @@ def _end_nodes(a: RationalBezier, b: RationalBezier, tol: float) -> set[tuple[fl
         if exact:
             out.update((t, u) for u in exact)
             continue
+        if _surely_far(b, pt[None, :], tol):
+            continue
         fu, fd = _foot(b, pt[None, :], 0.25 * tol)
         if fd[0] <= tol:
             out.add((t, float(fu[0])))
     for u, pt in ((0.0, ends_b[0]), (1.0, ends_b[1])):
-        if any(q[1] == u for q in out):
+        if any(q[1] == u for q in out) or _surely_far(a, pt[None, :], tol):
             continue
         ft, fd = _foot(a, pt[None, :], 0.25 * tol)
         if fd[0] <= tol:
@@ -153,7 +175,10 @@ def _chains(a: RationalBezier, b: RationalBezier, pts: list[Intersection], ovs: 
     From each contact, the next one (in ``t``) joined to it by a coincident stretch extends the
     chain; contacts in between that lie on another branch (a loop's double point) are passed over.
     """
-    nodes = sorted({(p.t, p.u) for p in pts} | {(o.t[0], o.u[0]) for o in ovs}
+    # a transversal crossing cannot end a coincident stretch: only tangent and end contacts
+    # (and overlap ends) are nodes; crossings inside a stretch (a loop's double point) are covered
+    nodes = sorted({(p.t, p.u) for p in pts if p.kind == "tangent" or p.t in (0.0, 1.0) or p.u in (0.0, 1.0)}
+                   | {(o.t[0], o.u[0]) for o in ovs}
                    | {(o.t[1], o.u[1]) for o in ovs} | (_end_nodes(a, b, tol) if ends else set()))
     linked = {((o.t[0], o.u[0]), (o.t[1], o.u[1])) for o in ovs}
     out: list[Overlap] = []
