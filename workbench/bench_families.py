@@ -23,6 +23,7 @@ import numpy as np
 
 from relief_cad.curves import RationalBezier
 from relief_cad.intersection import intersect
+
 from .bench_planar import occt_curve, occt_intersect
 
 __all__ = ["CORPUS", "run"]
