@@ -48,6 +48,7 @@ __all__ = [
     "END_TANGENT_SIN",
     "curve_direction",
     "needs_refining",
+    "whole_overlap",
     "refine_contacts",
     "refine_self",
     "self_overlaps",
@@ -502,6 +503,30 @@ def _singular_end(c: RationalBezier, t: float) -> bool:
         return False
     pts = c.control_points
     return bool(np.all(pts[0] == pts[1])) if t == 0.0 else bool(np.all(pts[-1] == pts[-2]))
+
+
+def whole_overlap(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap | None:
+    """The overlap of two curves with the same end points that coincide all along, else None.
+
+    Checked before clipping (coincident curves are the clipping's slowest case): the end points
+    must be equal exactly, so the test costs two comparisons for every other pair.
+
+    Examples
+    --------
+    >>> c = RationalBezier([[0, 0], [1, 2], [2, 0]])
+    >>> whole_overlap(c, c.elevate(2), 1e-9)
+    Overlap(t=(0.0, 1.0), u=(0.0, 1.0), kind='overlap')
+    """
+    pa, pb = a.control_points, b.control_points
+    if pa.shape[1] != pb.shape[1]:
+        return None
+    for u0, u1 in ((0.0, 1.0), (1.0, 0.0)):
+        i0, i1 = (0, -1) if u0 == 0.0 else (-1, 0)
+        same_ends = np.array_equal(pa[0], pb[i0]) and np.array_equal(pa[-1], pb[i1])
+        if same_ends and not np.array_equal(pa[0], pa[-1]):
+            if _coincide(a, b, 0.0, 1.0, u0, u1, tol):
+                return Overlap(t=(0.0, 1.0), u=(u0, u1))
+    return None
 
 
 def needs_refining(a: RationalBezier, b: RationalBezier, items: Sequence[Result]) -> bool:

@@ -72,7 +72,7 @@ from ._kernels import (
     intersect_one_kernel,
 )
 from ._types import FloatArray
-from .contacts import needs_refining, refine_contacts, refine_self, self_overlaps
+from .contacts import needs_refining, refine_contacts, refine_self, self_overlaps, whole_overlap
 from .curves import RationalBezier
 from .errors import (
     InputTypeError,
@@ -318,6 +318,11 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
         return finish(_self_planar(a.control_points, a.weights, ftol, nbudget), on_budget)
     # tol <= 0 asks the kernel for default_tolerance(a, b)
     ftol = check_tol(tol) or -1.0
+    whole = whole_overlap(a, b, default_tolerance(a, b) if ftol <= 0.0 else ftol) if (
+        np.array_equal(a.control_points[0], b.control_points[0])
+        or np.array_equal(a.control_points[0], b.control_points[-1])) else None
+    if whole is not None:  # coincident curves: the clipping's slowest case, decided by geometry
+        return IntersectionList([whole])
     res = _planar(a.control_points, a.weights, b.control_points, b.weights, ftol, nbudget, trusted=True)
     return finish(_refined(a, b, res, ftol), on_budget)
 
