@@ -75,7 +75,7 @@ def _decasteljau(h: FloatArray, t: FloatArray) -> tuple[FloatArray, FloatArray]:
     n = h.shape[0] - 1
     m = t.shape[0]
     b = np.broadcast_to(h, (m,) + h.shape).copy()
-    s = (1.0 - t)[:, None, None]
+    s = (1 - t)[:, None, None]
     tt = t[:, None, None]
     for r in range(1, n):
         b[:, : n + 1 - r] = s * b[:, : n + 1 - r] + tt * b[:, 1 : n + 2 - r]

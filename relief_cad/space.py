@@ -52,6 +52,7 @@ from ._kernels import (
     space_pair_kernel,
 )
 from ._types import FloatArray
+from .contacts import needs_refining, refine_contacts, refine_self
 from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError
 from .relief import ReliefPerspective, central_projection
@@ -338,11 +339,14 @@ def intersect_space(
     nbudget = check_budget(budget)
     ftol = check_tol(tol)
     if b is None:
-        rows = _self_rows(a3, default_tolerance(a3) if ftol is None else ftol, nbudget, k)
+        tol_s = default_tolerance(a3) if ftol is None else ftol
+        items, boxes = _rows_to_results(_self_rows(a3, tol_s, nbudget, k))
+        items = refine_self(a3, items, tol_s)
     else:
         b3 = b if b.dim == 3 else b.embedded(3)
         tol_v = -1.0 if ftol is None else ftol  # -1: kernel default
-        rows = _pair(a3.homogeneous, b3.homogeneous, tol_v, nbudget, k)
-    items, boxes = _rows_to_results(rows)
+        items, boxes = _rows_to_results(_pair(a3.homogeneous, b3.homogeneous, tol_v, nbudget, k))
+        if needs_refining(a3, b3, items):
+            items = refine_contacts(a3, b3, items, default_tolerance(a3, b3) if tol_v <= 0.0 else tol_v)
     items.sort(key=lambda r: r.t if isinstance(r, Intersection) else r.t[0])
     return finish(IntersectionList(items, boxes), on_budget)

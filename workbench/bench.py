@@ -26,6 +26,7 @@ BENCHMARKS = {
     "cad": f"{_PKG}.bench_cad",
     "space": f"{_PKG}.bench_space",
     "arrange": f"{_PKG}.bench_arrange",  # issue 13: arrange vs BOPAlgo_Builder
+    "families": f"{_PKG}.bench_families",
 }
 
 

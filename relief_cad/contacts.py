@@ -1,0 +1,587 @@
+r"""Contact post-pass: overlaps found by geometry, certified tangency, directions at singular points.
+
+The clipping kernels return candidate contacts fast; this module decides, on those candidates
+only (so it is never hot), what they are:
+
+- **Overlaps by geometry.** Two consecutive contacts ``p``, ``q`` (sorted by ``t``) bound a
+  coincident stretch when every sample of ``a`` on ``[p.t, q.t]`` lies within ``tol`` of the piece
+  of ``b`` between ``p.u`` and ``q.u``, *and* every sample of that piece of ``b`` lies within
+  ``tol`` of ``a`` on ``[p.t, q.t]`` (distance both ways). A chain of such stretches is one
+  :class:`~relief_cad.Overlap` whose ends are the chain's end contacts (exact ``0.0``/``1.0`` where
+  the kernel's end-point projection put them). This does not depend on the speed of either
+  parameterisation: a cubic with doubled end control points traces the same segment as a line.
+  Self-overlaps of curves that retrace themselves come out of the same test on pairs of pieces.
+- **Double root or two simple roots.** Two contacts closer than :data:`CLUSTER_GAP` in both
+  parameters are one double root when the signed distance of ``a`` from ``b`` has the same sign
+  between them as on both sides, and two simple roots when it changes sign. The binary64 control
+  points and weights are taken as the exact data (every double is a dyadic rational), and the
+  signed distance is evaluated exactly in rationals at the foot point, so the decision is
+  certified, whatever the gap (1e-9 in parameter, 1e-18 in distance).
+- **Directions from the first non-vanishing derivative.** At a point where the derivative
+  vanishes (a repeated control point at an end, a cusp) the direction of the curve is that of
+  its first non-vanishing derivative: after splitting the curve there, the first control point
+  that differs from the point. End meetings are classified by these directions.
+- **Higher-order contacts** (tangencies, osculations) are located on the derivative system: the
+  root of the tangency function ``a'(t) × b'(u(t))`` (``u(t)`` the foot point), or of the
+  curvature difference when the tangency function has a double root (an osculating contact).
+
+>>> from relief_cad import RationalBezier, intersect
+>>> straight = RationalBezier([[0, 0], [0, 0], [1, 1], [1, 1]])   # a segment stored as a cubic
+>>> intersect(straight, straight.reversed())
+[Overlap(t=(0.0, 1.0), u=(1.0, 0.0), kind='overlap')]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from fractions import Fraction
+from typing import Literal
+
+import numpy as np
+
+from ._types import FloatArray
+from .curves import RationalBezier, _decasteljau
+from .results import Intersection, Overlap, Result
+
+__all__ = [
+    "CLUSTER_GAP",
+    "END_TANGENT_SIN",
+    "curve_direction",
+    "needs_refining",
+    "whole_overlap",
+    "refine_contacts",
+    "refine_self",
+    "self_overlaps",
+]
+
+CLUSTER_GAP: float = 1e-6
+"""Parameter distance below which two contacts are tested as one double root (dimensionless)."""
+
+END_TANGENT_SIN: float = 1e-7
+"""``|sin|`` of the angle between the directions below which an end meeting is ``"tangent"``."""
+
+_SAMPLES_PER_DEGREE = 3
+_NEWTON_STEPS = 40  # linear convergence (ratio 2/3) at a fold tip needs ~35 steps
+_SINGULAR = 1e-9  # |derivative| / size below which the first non-vanishing derivative is used
+
+
+# ---------------------------------------------------------------------------- distance to a curve
+def _foot(b: RationalBezier, pts: FloatArray, enough: float = 0.0) -> tuple[FloatArray, FloatArray]:
+    """Closest parameters on ``b`` (shape (m,)) and distances (m,) for points ``pts`` (m, d).
+
+    Safeguarded Newton from the nearest of a grid; it stops once every distance is ``<= enough``.
+    """
+    n = max(8, _SAMPLES_PER_DEGREE * 4 * (b.degree + 1))
+    grid = np.linspace(0.0, 1.0, n + 1)
+    vals = b.evaluate(grid)
+    d2 = ((pts[:, None, :] - vals[None, :, :]) ** 2).sum(axis=2)
+    # Newton from the three nearest grid points (near a double point the nearest may be on the
+    # other branch), keeping the best
+    seeds = np.argsort(d2, axis=1)[:, :3]
+    m = pts.shape[0]
+    pts = np.repeat(pts, seeds.shape[1], axis=0)
+    u = grid[seeds.ravel()]
+    d2 = d2[np.repeat(np.arange(m), seeds.shape[1]), seeds.ravel()][:, None]
+    dist = np.sqrt(d2.min(axis=1))
+    hod = b.hodograph()
+    delta = 0.5 / n
+    stalled = 0
+    for _ in range(_NEWTON_STEPS):
+        before = dist  # safeguarded: a step is kept only where it brings b closer
+        r = b.evaluate(u) - pts
+        d1 = hod.evaluate(u)
+        step = (r * d1).sum(axis=1) / np.maximum((d1 * d1).sum(axis=1), 1e-300)
+        # the Newton step, and two shrinking probes that leave stationary points (a fold tip)
+        for trial in (np.clip(u - step, 0.0, 1.0), np.clip(u + delta, 0.0, 1.0),
+                      np.clip(u - delta, 0.0, 1.0)):
+            tdist = np.sqrt(((b.evaluate(trial) - pts) ** 2).sum(axis=1))
+            better = tdist < dist
+            u = np.where(better, trial, u)
+            dist = np.where(better, tdist, dist)
+        delta *= 0.5
+        if np.all(dist <= enough):
+            break
+        stalled = stalled + 1 if np.all(dist >= before * (1.0 - 1e-6)) else 0
+        if stalled >= 3:  # every point at its local minimum (the probes gain nothing more)
+            break
+    k = seeds.shape[1]
+    best = np.argmin(dist.reshape(m, k), axis=1)
+    return u.reshape(m, k)[np.arange(m), best], dist.reshape(m, k)[np.arange(m), best]
+
+
+def _surely_far(b: RationalBezier, pts: FloatArray, tol: float) -> bool:
+    """True when some point of ``pts`` (m, d) is certainly farther than ``tol`` from ``b``.
+
+    Grid test only (no Newton): a point of ``b`` lies within one grid chord of a grid point, so
+    a grid distance above ``tol`` plus the longest chord is a certain miss.
+    """
+    grid = b.evaluate(np.linspace(0.0, 1.0, 8 * (b.degree + 1) + 1))
+    chord = float(np.sqrt((np.diff(grid, axis=0) ** 2).sum(axis=1)).max())
+    d2 = ((pts[:, None, :] - grid[None, :, :]) ** 2).sum(axis=2).min(axis=1)
+    return bool(np.any(np.sqrt(d2) > tol + chord))
+
+
+def _piece(c: RationalBezier, s0: float, s1: float) -> RationalBezier:
+    return c if (s0, s1) == (0.0, 1.0) else c.segment(s0, s1)
+
+
+def _coincide(a: RationalBezier, b: RationalBezier, t0: float, t1: float, u0: float, u1: float,
+              tol: float) -> bool:
+    """True when ``a[t0, t1]`` and ``b[u0 .. u1]`` are within ``tol`` of each other, both ways."""
+    if t0 == t1 or u0 == u1:
+        return False
+    pa = _piece(a, t0, t1)
+    pb = _piece(b, min(u0, u1), max(u0, u1))
+    quick = np.array([0.25, 0.5, 0.75])
+    if _surely_far(pb, pa.evaluate(quick), tol) or _surely_far(pa, pb.evaluate(quick), tol):
+        return False
+    m = _SAMPLES_PER_DEGREE * (a.degree + b.degree) + 5
+    s = (np.arange(1, m + 1) - 0.5) / m
+    for src, dst in ((pa, pb), (pb, pa)):
+        pts = src.evaluate(s)
+        if not np.all(_foot(dst, pts, 0.25 * tol)[1] <= tol):
+            return False
+    span = float(np.ptp(pa.evaluate(np.linspace(0.0, 1.0, m)), axis=0).max())
+    return span > 4.0 * tol
+
+
+# ---------------------------------------------------------------------------- overlaps
+def _end_nodes(a: RationalBezier, b: RationalBezier, tol: float) -> set[tuple[float, float]]:
+    """Contacts at the curves' end points (exact where the end points are the same point)."""
+    out: set[tuple[float, float]] = set()
+    ends_b = (b.control_points[0], b.control_points[-1])
+    for t, pt in ((0.0, a.control_points[0]), (1.0, a.control_points[-1])):
+        exact = [u for u, q in zip((0.0, 1.0), ends_b, strict=True) if np.array_equal(pt, q)]
+        if exact:
+            out.update((t, u) for u in exact)
+            continue
+        if _surely_far(b, pt[None, :], tol):
+            continue
+        fu, fd = _foot(b, pt[None, :], 0.25 * tol)
+        if fd[0] <= tol:
+            out.add((t, float(fu[0])))
+    for u, pt in ((0.0, ends_b[0]), (1.0, ends_b[1])):
+        if any(q[1] == u for q in out) or _surely_far(a, pt[None, :], tol):
+            continue
+        ft, fd = _foot(a, pt[None, :], 0.25 * tol)
+        if fd[0] <= tol:
+            out.add((float(ft[0]), u))
+    return out
+
+
+def _chains(a: RationalBezier, b: RationalBezier, pts: list[Intersection], ovs: list[Overlap],
+            tol: float, ends: bool = True) -> list[Overlap]:
+    """Chains of contacts with coincident stretches between them, as overlaps.
+
+    From each contact, the next one (in ``t``) joined to it by a coincident stretch extends the
+    chain; contacts in between that lie on another branch (a loop's double point) are passed over.
+    """
+    # a transversal crossing cannot end a coincident stretch: only tangent and end contacts
+    # (and overlap ends) are nodes; crossings inside a stretch (a loop's double point) are covered
+    nodes = sorted({(p.t, p.u) for p in pts if p.kind == "tangent" or p.t in (0.0, 1.0) or p.u in (0.0, 1.0)}
+                   | {(o.t[0], o.u[0]) for o in ovs}
+                   | {(o.t[1], o.u[1]) for o in ovs} | (_end_nodes(a, b, tol) if ends else set()))
+    linked = {((o.t[0], o.u[0]), (o.t[1], o.u[1])) for o in ovs}
+    out: list[Overlap] = []
+    i = 0
+    while i < len(nodes):
+        start = cur = nodes[i]
+        while True:
+            nxt = next((q for q in nodes if q[0] > cur[0] and ((cur, q) in linked
+                        or _coincide(a, b, cur[0], q[0], cur[1], q[1], tol))), None)
+            if nxt is None:
+                break
+            cur = nxt
+        if cur != start:
+            out.append(Overlap(t=(start[0], cur[0]), u=(start[1], cur[1])))
+            i = nodes.index(cur) + 1
+        else:
+            i += 1
+    return out
+
+
+def _covered(p: Intersection, ovs: Sequence[Overlap], slack: float = 1e-12) -> bool:
+    return any(o.t[0] - slack <= p.t <= o.t[1] + slack
+               and min(o.u) - slack <= p.u <= max(o.u) + slack for o in ovs)
+
+
+def _overlaps(a: RationalBezier, b: RationalBezier, items: list[Result], tol: float) -> list[Result]:
+    pts = [r for r in items if isinstance(r, Intersection)]
+    ovs = [r for r in items if isinstance(r, Overlap)]
+    if not ((len(pts) >= 2 and any(p.kind == "tangent" for p in pts)) or (ovs and pts)):
+        return items
+    found = _chains(a, b, pts, ovs, tol)
+    if not found:
+        return items
+    kept: list[Result] = [p for p in pts if not _covered(p, found)]
+    return kept + list(found)
+
+
+def self_overlaps(pieces: Sequence[tuple[Overlap, bool]]) -> list[Overlap]:
+    """Merge self-overlaps of pieces that continue each other into one (ends exact).
+
+    Parameters
+    ----------
+    pieces : sequence of (Overlap, bool)
+        Overlaps in the curve's own parameters with ``t`` before ``u``; the flag is ignored
+        (kept for callers that track where each came from).
+
+    Returns
+    -------
+    list of Overlap
+        Sorted by ``t``, chained overlaps (one's end is the next one's start) merged.
+
+    Examples
+    --------
+    >>> parts = [(Overlap(t=(0.0, 0.25), u=(1.0, 0.75)), True), (Overlap(t=(0.25, 0.5), u=(0.75, 0.5)), True)]
+    >>> self_overlaps(parts)
+    [Overlap(t=(0.0, 0.5), u=(1.0, 0.5), kind='overlap')]
+    """
+    ovs = sorted((o for o, _ in pieces), key=lambda o: o.t)
+    out: list[Overlap] = []
+    for o in ovs:
+        if out and abs(out[-1].t[1] - o.t[0]) <= 1e-12 and abs(out[-1].u[1] - o.u[0]) <= 1e-12:
+            last = out.pop()
+            out.append(Overlap(t=(last.t[0], o.t[1]), u=(last.u[0], o.u[1])))
+        else:
+            out.append(o)
+    return out
+
+
+def _fold(c: RationalBezier, t: float, u: float) -> float | None:
+    """The fold parameter between ``t`` and ``u`` where ``c`` turns back (derivative reverses)."""
+    ref = c.derivative(t)
+    lo, hi = t, u
+    if float(c.derivative(hi) @ ref) >= 0.0:
+        return None
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if mid in (lo, hi):
+            break
+        lo, hi = (mid, hi) if float(c.derivative(mid) @ ref) > 0.0 else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def refine_self(c: RationalBezier, items: Sequence[Result], tol: float) -> list[Result]:
+    """Return the self-intersections of ``c`` with retraced stretches as one overlap each.
+
+    Parameters
+    ----------
+    c : RationalBezier
+    items : sequence of Intersection and Overlap
+        Self-intersection candidates, ``t < u``, in ``c``'s own parameter.
+    tol : float
+        Distance tolerance (model units).
+
+    Returns
+    -------
+    list of Intersection and Overlap
+        Sorted by ``t``; a stretch run twice (out and back) is one :class:`Overlap` with
+        ``t < u``, reaching the fold point where the curve turns back.
+
+    Examples
+    --------
+    >>> c = RationalBezier([[0, 0, 0], [1, 1, 1], [1, 1, 1], [0, 0, 0]])
+    >>> pts = [Intersection(x, 1.0 - x, c(x), "tangent") for x in (0.0, 0.25, 0.375)]
+    >>> refine_self(c, pts, 1e-9)
+    [Overlap(t=(0.0, 0.5), u=(1.0, 0.5), kind='overlap')]
+    """
+    pts = [r for r in items if isinstance(r, Intersection)]
+    ovs = [r for r in items if isinstance(r, Overlap)]
+    if not ((len(pts) >= 2 and any(p.kind == "tangent" for p in pts)) or (ovs and pts)):
+        return list(items)
+    found = []
+    for o in _chains(c, c, pts, ovs, tol, ends=False) + ovs:
+        if o.t == o.u:
+            continue  # the curve against itself, not a retraced stretch
+        t1, u1 = o.t[1], o.u[1]
+        m = _fold(c, t1, u1) if u1 > t1 else None
+        if m is not None and m > t1 and _coincide(c, c, t1, m, u1, m, tol):
+            o = Overlap(t=(o.t[0], m), u=(o.u[0], m))
+        found.append((o, True))
+    merged = _drop_nested(self_overlaps(found))
+    res: list[Result] = [p for p in pts if not _covered(p, merged)]
+    res += merged
+    res.sort(key=lambda r: r.t[0] if isinstance(r, Overlap) else r.t)
+    return res
+
+
+def _drop_nested(ovs: list[Overlap]) -> list[Overlap]:
+    ovs = list(dict.fromkeys(ovs))
+    return [o for o in ovs if not any(q is not o and q.t[0] <= o.t[0] and o.t[1] <= q.t[1]
+                                      and min(q.u) <= min(o.u) and max(o.u) <= max(q.u) for q in ovs)]
+
+
+# ---------------------------------------------------------------------------- directions
+def curve_direction(c: RationalBezier, t: float, side: Literal[1, -1] = 1) -> FloatArray:
+    """Return the unit direction in which ``c`` leaves ``c(t)`` towards ``t + side·dt``.
+
+    It is the direction of the first non-vanishing derivative: after splitting ``c`` at ``t``,
+    the first control point of the piece on that side that differs from ``c(t)``. At a regular
+    point this is ``±c'(t) / |c'(t)|``; at an end with repeated control points, or a cusp, it
+    is still defined.
+
+    Parameters
+    ----------
+    c : RationalBezier
+    t : float
+        Parameter in ``[0, 1]``.
+    side : {1, -1}
+        ``1`` for the direction of increasing ``t``, ``-1`` for decreasing ``t``.
+
+    Returns
+    -------
+    ndarray, shape (d,)
+        A unit vector (zeros for a curve that is one point on that side).
+
+    Examples
+    --------
+    >>> c = RationalBezier([[0, 0], [0, 0], [1, 0], [1, 1]])   # c'(0) = 0
+    >>> curve_direction(c, 0.0).tolist()
+    [1.0, 0.0]
+    >>> curve_direction(c, 1.0, side=-1).tolist()
+    [0.0, -1.0]
+    """
+    if (t >= 1.0 and side == 1) or (t <= 0.0 and side == -1):
+        return np.zeros(c.dim)
+    if 0.0 < t < 1.0:
+        left, right = c.split(t)
+        piece = right if side == 1 else left.reversed()
+    else:
+        piece = c if side == 1 else c.reversed()
+    pts = piece.control_points
+    scale = float(np.abs(pts).max()) or 1.0
+    for q in pts[1:]:
+        d = q - pts[0]
+        norm = float(np.hypot.reduce(d))
+        if norm > 4e-16 * scale:
+            unit: FloatArray = d / norm
+            return unit
+    return np.zeros(c.dim)
+
+
+def _is_singular(c: RationalBezier, t: float, kind: str) -> bool:
+    pts = c.control_points
+    if t == 0.0 or t == 1.0:  # an end: singular exactly when its control point is repeated
+        i, j = (0, 1) if t == 0.0 else (-1, -2)
+        return bool(np.all(pts[i] == pts[j]))
+    if kind != "tangent":
+        return False
+    size = float(np.ptp(pts, axis=0).max()) or 1.0
+    return float(np.hypot.reduce(c.derivative(t))) <= _SINGULAR * size
+
+
+def _end_kind(a: RationalBezier, b: RationalBezier, p: Intersection) -> Intersection:
+    """Reclassify a contact at a singular point (zero derivative) by its true directions."""
+    if not (_is_singular(a, p.t, p.kind) or _is_singular(b, p.u, p.kind)):
+        return p
+    sides_a: tuple[Literal[1, -1], ...] = (1,) if p.t <= 0.0 else (-1,) if p.t >= 1.0 else (1, -1)
+    sides_b: tuple[Literal[1, -1], ...] = (1,) if p.u <= 0.0 else (-1,) if p.u >= 1.0 else (1, -1)
+    sines = []
+    for sa in sides_a:
+        da = curve_direction(a, p.t, sa)
+        for sb in sides_b:
+            db = curve_direction(b, p.u, sb)
+            sines.append(float(np.hypot.reduce(np.cross(da, db))) if a.dim == 3
+                         else abs(float(da[0] * db[1] - da[1] * db[0])))
+    kind: Literal["crossing", "tangent"] = "tangent" if min(sines) < END_TANGENT_SIN else "crossing"
+    if kind == p.kind:
+        return p
+    return Intersection(p.t, p.u, p.point, kind, p.distance)
+
+
+# ---------------------------------------------------------------------------- double roots
+def _exact(c: RationalBezier, t: float) -> tuple[list[Fraction], list[Fraction]]:
+    """Exact point and derivative of ``c`` at the double ``t`` (the doubles are exact data)."""
+    h = np.array([[Fraction(float(v)) for v in row] for row in c.homogeneous], dtype=object)
+    val, dval = _decasteljau(h, np.array([Fraction(t)], dtype=object))
+    w = val[0, -1]
+    dw = dval[0, -1]
+    pt = [x / w for x in val[0, :-1]]
+    der = [(dx - x * dw) / w for dx, x in zip(dval[0, :-1], pt, strict=True)]
+    return pt, der
+
+
+def _side(a: RationalBezier, b: RationalBezier, t: float, u_guess: float) -> int:
+    """Exact sign of the signed distance of ``a(t)`` from ``b`` at its (float) foot point."""
+    u, _ = _foot(b, a.evaluate(np.array([t])))
+    u0 = float(u[0]) if abs(float(u[0]) - u_guess) < 1e-3 else u_guess
+    pa, _ = _exact(a, t)
+    pb, db = _exact(b, u0)
+    s = db[0] * (pa[1] - pb[1]) - db[1] * (pa[0] - pb[0])
+    return (s > 0) - (s < 0)
+
+
+def _double_root(a: RationalBezier, b: RationalBezier, p: Intersection, q: Intersection) -> bool:
+    """True when two close contacts are one double root (no sign change of the distance).
+
+    The signed distance is taken exactly at 1/4, 1/2 and 3/4 of the way from ``p`` to ``q`` and one
+    gap beyond each; one double root leaves every nonzero sign the same, two simple roots flip
+    the sign between them.
+    """
+    gap = q.t - p.t
+    if gap <= 0.0:
+        return True
+    inner = {_side(a, b, p.t + f * gap, p.u + f * (q.u - p.u)) for f in (0.25, 0.5, 0.75)} - {0}
+    outer = {_side(a, b, t, u) for t, u in ((p.t - gap, p.u), (q.t + gap, q.u)) if 0.0 <= t <= 1.0} - {0}
+    return not inner or not outer or inner == outer
+
+
+def _merge_clusters(a: RationalBezier, b: RationalBezier, pts: list[Intersection]) -> list[Intersection]:
+    out: list[Intersection] = []
+    for p in sorted(pts, key=lambda r: r.t):
+        last = out[-1] if out else None
+        if (last is not None and abs(p.t - last.t) < CLUSTER_GAP and abs(p.u - last.u) < CLUSTER_GAP
+                and 0.0 < last.t and p.t < 1.0 and _double_root(a, b, last, p)):
+            out[-1] = Intersection(0.5 * (last.t + p.t), 0.5 * (last.u + p.u),
+                                   0.5 * (np.asarray(last.point) + np.asarray(p.point)), "tangent",
+                                   max(last.distance, p.distance))
+            continue
+        if (last is not None and abs(p.t - last.t) < CLUSTER_GAP and abs(p.u - last.u) < CLUSTER_GAP
+                and last.kind == "tangent" and p.kind == "tangent" and not _double_root(a, b, last, p)):
+            out[-1] = Intersection(last.t, last.u, last.point, "crossing", last.distance)
+            p = Intersection(p.t, p.u, p.point, "crossing", p.distance)
+        out.append(p)
+    return out
+
+
+# ---------------------------------------------------------------------------- tangent location
+def _tangency(a: RationalBezier, b: RationalBezier, ts: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """Tangency function ``a'(t) × b'(u(t)) / (|a'| |b'|)`` at ``ts`` (m,), and the foot points."""
+    u, _ = _foot(b, a.evaluate(ts))
+    da, db = a.derivative(ts), b.derivative(u)
+    h = (da[:, 0] * db[:, 1] - da[:, 1] * db[:, 0]) / np.maximum(
+        np.hypot(da[:, 0], da[:, 1]) * np.hypot(db[:, 0], db[:, 1]), 1e-300)
+    return h, u
+
+
+def _contact_root(fit: np.polynomial.Polynomial) -> float | None:
+    """The root near 0 of the lowest derivative of ``fit`` that has a simple root there.
+
+    A contact of order ``m`` makes the tangency function vanish to order ``m - 1``; its
+    ``(m - 2)``-th derivative has a simple root there, well conditioned even where the function
+    itself is below rounding (deflation by differentiation).
+    """
+    grid = np.linspace(-1.0, 1.0, 41)
+    for j in range(4):
+        q = fit.deriv(j) if j else fit
+        dq = q.deriv()
+        scale = float(np.abs(dq(grid)).max())
+        roots = [float(r.real) for r in q.roots() if abs(r.imag) < 1e-9 and abs(r.real) < 0.05]
+        roots.sort(key=abs)
+        if roots and scale > 0.0 and abs(float(dq(roots[0]))) >= 1e-3 * scale:
+            return roots[0]
+    return None
+
+
+def _locate(a: RationalBezier, b: RationalBezier, p: Intersection, tol: float) -> Intersection:
+    """Place an interior tangent contact on the root of the derivative system.
+
+    The tangency function is sampled on a window of half-width 1e-2 around the kernel's estimate
+    (where it is far above rounding), fitted by a degree-10 polynomial, and the contact is the
+    simple root of its lowest derivative that has one (see :func:`_contact_root`).
+    """
+    w = 1e-2
+    if a.dim != 2 or not (w < p.t < 1.0 - w and 0.0 < p.u < 1.0):
+        return p
+    s = np.cos(np.pi * (np.arange(21) + 0.5) / 21)
+    h, _ = _tangency(a, b, p.t + w * s)
+    root = _contact_root(np.polynomial.Polynomial.fit(s, h, 10, domain=[-1.0, 1.0]))
+    if root is None:
+        return p
+    t = p.t + w * root
+    u = float(_foot(b, a.evaluate(np.array([t])))[0][0])
+    gap = float(np.hypot.reduce(a.evaluate(t) - b.evaluate(u)))
+    if gap > max(tol, p.distance) or abs(u - p.u) > 1e-4:
+        return p
+    return Intersection(t, u, 0.5 * (a.evaluate(t) + b.evaluate(u)), p.kind, gap)
+
+
+# ---------------------------------------------------------------------------- entry point
+def _singular_end(c: RationalBezier, t: float) -> bool:
+    if t != 0.0 and t != 1.0:
+        return False
+    pts = c.control_points
+    return bool(np.all(pts[0] == pts[1])) if t == 0.0 else bool(np.all(pts[-1] == pts[-2]))
+
+
+def whole_overlap(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap | None:
+    """The overlap of two curves with the same end points that coincide all along, else None.
+
+    Checked before clipping (coincident curves are the clipping's slowest case): the end points
+    must be equal exactly, so the test costs two comparisons for every other pair.
+
+    Examples
+    --------
+    >>> c = RationalBezier([[0, 0], [1, 2], [2, 0]])
+    >>> whole_overlap(c, c.elevate(2), 1e-9)
+    Overlap(t=(0.0, 1.0), u=(0.0, 1.0), kind='overlap')
+    """
+    pa, pb = a.control_points, b.control_points
+    if pa.shape[1] != pb.shape[1]:
+        return None
+    for u0, u1 in ((0.0, 1.0), (1.0, 0.0)):
+        i0, i1 = (0, -1) if u0 == 0.0 else (-1, 0)
+        same_ends = np.array_equal(pa[0], pb[i0]) and np.array_equal(pa[-1], pb[i1])
+        if same_ends and not np.array_equal(pa[0], pa[-1]):
+            if _coincide(a, b, 0.0, 1.0, u0, u1, tol):
+                return Overlap(t=(0.0, 1.0), u=(u0, u1))
+    return None
+
+
+def needs_refining(a: RationalBezier, b: RationalBezier, items: Sequence[Result]) -> bool:
+    """True when :func:`refine_contacts` can change ``items`` (a cheap test, run on every pair).
+
+    Interior crossings, and end meetings where both derivatives are nonzero, are final as the
+    kernel gives them; overlaps, tangent contacts and end meetings at a repeated end control
+    point are not.
+
+    Examples
+    --------
+    >>> line = RationalBezier([[0, 0], [1, 1]])
+    >>> needs_refining(line, line, [Intersection(0.5, 0.5, line(0.5), "crossing")])
+    False
+    """
+    return any(isinstance(r, Overlap) or r.kind == "tangent" or _singular_end(a, r.t)
+               or _singular_end(b, r.u) for r in items)
+
+
+def refine_contacts(a: RationalBezier, b: RationalBezier, items: Sequence[Result],
+                    tol: float) -> list[Result]:
+    """Return the kernel's candidate contacts of ``a`` and ``b``, decided by geometry.
+
+    Parameters
+    ----------
+    a, b : RationalBezier
+        The two curves (same dimension, 2 or 3).
+    items : sequence of Intersection and Overlap
+        The kernel's results for the pair, in the curves' own parameters.
+    tol : float
+        The distance tolerance used (model units).
+
+    Returns
+    -------
+    list of Intersection and Overlap
+        Sorted by ``t``: coincident stretches as one :class:`Overlap` each, close contacts
+        decided as one double root or two simple roots by the exact sign of the distance, end
+        meetings at singular points classified by their first non-vanishing derivatives, and
+        interior tangent contacts located on the derivative system.
+
+    Examples
+    --------
+    >>> line = RationalBezier([[0, 0], [1, 1]])
+    >>> cubic = RationalBezier([[0, 0], [0, 0], [1, 1], [1, 1]])
+    >>> from relief_cad import intersect
+    >>> refine_contacts(line, cubic, intersect(line, cubic), 1e-9)
+    [Overlap(t=(0.0, 1.0), u=(0.0, 1.0), kind='overlap')]
+    """
+    out = _overlaps(a, b, list(items), tol)
+    pts = [r for r in out if isinstance(r, Intersection)]
+    ovs = [r for r in out if isinstance(r, Overlap)]
+    if pts and a.dim == 2:
+        pts = _merge_clusters(a, b, pts)
+        pts = [_locate(a, b, p, tol) if p.kind == "tangent" else p for p in pts]
+    pts = [_end_kind(a, b, p) for p in pts]
+    res: list[Result] = [*pts, *ovs]
+    res.sort(key=lambda r: r.t[0] if isinstance(r, Overlap) else r.t)
+    return res

@@ -1,0 +1,115 @@
+"""The contact post-pass (relief_cad.contacts) on real curves, against answers known exactly."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from relief_cad import RationalBezier, intersect
+from relief_cad.contacts import _double_root, _foot, curve_direction, refine_self
+from relief_cad.results import Intersection, Overlap
+
+
+def _parabola(r1: float, r2: float) -> RationalBezier:
+    """y = (t - r1)(t - r2) over x = t, exact Bernstein coefficients for dyadic roots."""
+    return RationalBezier([[0.0, r1 * r2], [0.5, r1 * r2 - 0.5 * (r1 + r2)], [1.0, (1 - r1) * (1 - r2)]])
+
+
+AXIS = RationalBezier([[-1.0, 0.0], [2.0, 0.0]])
+
+
+def test_two_simple_roots_7e_9_apart_stay_two_crossings() -> None:
+    r2 = 0.5 + 2.0**-27
+    res = intersect(_parabola(0.5, r2), AXIS)
+    assert [r.kind for r in res] == ["crossing", "crossing"]
+    assert abs(res[0].t - 0.5) <= 1e-13 and abs(res[1].t - r2) <= 1e-13
+
+
+def test_exact_double_root_is_one_tangent() -> None:
+    res = intersect(_parabola(0.5, 0.5), AXIS)
+    assert len(res) == 1 and res[0].kind == "tangent" and abs(res[0].t - 0.5) <= 1e-7
+
+
+@pytest.mark.parametrize("gap", [2.0**-26, 2.0**-20, 2.0**-14])  # (0.5 - g)(0.5 + g) exact in binary64
+def test_sign_test_decides_exactly(gap: float) -> None:
+    a = _parabola(0.5, 0.5)
+    p = Intersection(0.5 - gap, (1.5 - gap) / 3, a(0.5 - gap), "tangent")
+    q = Intersection(0.5 + gap, (1.5 + gap) / 3, a(0.5 + gap), "tangent")
+    assert _double_root(a, AXIS, p, q)              # the same sign between and outside
+    b = _parabola(0.5 - gap, 0.5 + gap)
+    assert not _double_root(b, AXIS, p, q)          # the sign changes between: two roots
+
+
+def test_direction_from_first_nonvanishing_derivative() -> None:
+    c = RationalBezier([[0, 0], [0, 0], [0, 0], [3, 4]])
+    assert np.allclose(curve_direction(c, 0.0), [0.6, 0.8])
+    assert np.allclose(curve_direction(c, 1.0, side=-1), [-0.6, -0.8])
+    assert np.allclose(curve_direction(c, 1.0), [0.0, 0.0])       # nothing beyond the end
+    cusp = RationalBezier([[0, 0], [2, 2], [0, 2], [2, 0]])       # c'(1/2) = 0: a cusp
+    assert np.linalg.norm(cusp.derivative(0.5)) < 1e-12
+    left, right = curve_direction(cusp, 0.5, -1), curve_direction(cusp, 0.5, 1)
+    assert np.allclose(left, right, atol=1e-6)  # both branches leave the tip along one tangent
+
+
+@pytest.mark.parametrize("deg", [15, 45, 90, 135, 175])
+def test_end_meeting_with_zero_derivative_is_a_crossing(deg: int) -> None:
+    th = math.radians(deg)
+    a = RationalBezier([[0, 0], [0, 0], [1, 0], [1, 0]])
+    b = RationalBezier([[0, 0], [0, 0], [math.cos(th), math.sin(th)], [math.cos(th), math.sin(th)]])
+    res = intersect(a, b)
+    assert [(r.t, r.u, r.kind) for r in res] == [(0.0, 0.0, "crossing")]
+
+
+def test_fold_back_at_end_is_tangent() -> None:
+    a = RationalBezier([[0, 0], [1, 0], [1, 0]])
+    b = RationalBezier([[1, 0], [1, 0], [1, 1], [0, 1]])   # leaves a(1) at 90 degrees
+    assert [r.kind for r in intersect(a, b)] == ["crossing"]
+    c = RationalBezier([[1, 0], [1, 0], [0.5, 0], [0, -1]])  # leaves a(1) going back: a fold-back
+    assert [r.kind for r in intersect(a, c)] == ["tangent"]
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_retracing_curve_self_overlap(dim: int) -> None:
+    pts = np.array([[0, 0, 0], [1, 1, 1], [1, 1, 1], [0, 0, 0]], dtype=float)[:, :dim]
+    assert intersect(RationalBezier(pts)) == [Overlap(t=(0.0, 0.5), u=(1.0, 0.5))]
+
+
+def test_refine_self_keeps_an_isolated_double_point() -> None:
+    loop = RationalBezier([[0, 0], [3, 3], [-1, 3], [2, 0]])
+    res = intersect(loop)
+    assert len(res) == 1 and isinstance(res[0], Intersection)
+    assert refine_self(loop, res, 1e-9) == list(res)
+
+
+def test_doubled_straight_cubic_against_sub_segment_and_line() -> None:
+    c = RationalBezier([[0, 0], [0, 0], [1, 1], [1, 1]])
+    assert intersect(c, RationalBezier([[0, 0], [1, 1]])) == [Overlap(t=(0.0, 1.0), u=(0.0, 1.0))]
+    res = intersect(c, c.segment(0.5, 1.0))
+    assert len(res) == 1 and isinstance(res[0], Overlap)
+    assert res[0].t[1] == 1.0 and abs(res[0].t[0] - 0.5) <= 1e-12 and res[0].u == (0.0, 1.0)
+
+
+def test_curve_against_itself_elevated_and_reversed() -> None:
+    rng = np.random.default_rng(7)
+    for _ in range(5):
+        c = RationalBezier(rng.random((6, 2)))
+        assert intersect(c, c) == [Overlap(t=(0.0, 1.0), u=(0.0, 1.0))]
+        assert intersect(c, c.reversed()) == [Overlap(t=(0.0, 1.0), u=(1.0, 0.0))]
+        res = intersect(c, c.elevate(1))
+        assert len(res) == 1 and isinstance(res[0], Overlap)
+
+
+def test_crossing_curves_stay_points() -> None:
+    a = RationalBezier([[0, 0], [1, 2], [2, 0]])
+    b = RationalBezier([[0, 0.5], [2, 0.5]])
+    assert [r.kind for r in intersect(a, b)] == ["crossing", "crossing"]
+
+
+def test_foot_leaves_a_fold_tip() -> None:
+    fold = RationalBezier([[0, 0], [2, 0], [1, 0]])  # x(t) = 4t - 3t^2, turns back at t = 2/3
+    piece = fold.segment(0.5, 0.7)                   # holds the tip, at s = 5/6
+    pts = piece.evaluate(np.array([0.853, 0.95]))    # nearest grid point: the tip, a stationary point
+    _u, dist = _foot(piece, pts)
+    assert np.all(dist <= 1e-12)
