@@ -50,7 +50,15 @@ from typing import Literal
 
 import numpy as np
 
-from ._checks import DEFAULT_BUDGET, OnBudget, check_budget, check_curve, check_on_budget, check_tol
+from ._checks import (
+    DEFAULT_BUDGET,
+    OnBudget,
+    as_real_array,
+    check_budget,
+    check_curve,
+    check_on_budget,
+    check_tol,
+)
 from ._kernels import (
     KIND_CROSSING,
     KIND_OVERLAP,
@@ -332,8 +340,8 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     check_curve(curve, "curve")
     if curve.dim != 2:
         raise ShapeError(f"intersect_line needs a planar curve (dim 2), not dim {curve.dim}")
-    p = np.asarray(point, dtype=np.float64)
-    d = np.asarray(direction, dtype=np.float64)
+    p = as_real_array(point, "point")
+    d = as_real_array(direction, "direction")
     if p.shape != (2,) or d.shape != (2,):
         raise ShapeError(f"point and direction should have shape (2,), not {p.shape} and {d.shape}")
     if not (np.all(np.isfinite(p)) and np.all(np.isfinite(d))):
@@ -403,6 +411,8 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
     >>> [[r.t for r in lst] for lst in intersect_many([(a, b), (b, a)])]
     [[0.5], [0.5]]
     """
+    if not isinstance(pairs, Iterable):
+        raise InputTypeError(f"pairs should be an iterable of (a, b) tuples, not {type(pairs).__name__}")
     plist = list(pairs)
     check_on_budget(on_budget)
     nbudget = check_budget(budget)

@@ -42,7 +42,7 @@ from typing import Literal
 
 import numpy as np
 
-from ._checks import check_budget, check_on_budget, check_tol
+from ._checks import check_budget, check_on_budget, check_span, check_tol
 from ._kernels import (
     KIND_OVERLAP,
     KIND_UNRESOLVED,
@@ -334,6 +334,7 @@ def intersect_space(
             f"{type(a).__name__} and {type(b).__name__}"
         )
     a3 = a if a.dim == 3 else a.embedded(3)
+    k = check_span(k)
     check_on_budget(on_budget)
     nbudget = check_budget(budget)
     ftol = check_tol(tol)
