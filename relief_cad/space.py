@@ -56,7 +56,7 @@ from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError
 from .relief import ReliefPerspective, central_projection
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
-from .tolerances import default_tolerance
+from .tolerances import default_tolerance, is_point_like
 
 __all__ = ["ReliefFrame", "ReliefScheme", "intersect_space", "relief_scheme"]
 
@@ -236,6 +236,8 @@ def _monotone(points: FloatArray) -> bool:
 
 def _self_rows(curve: RationalBezier, tol: float, budget: int, k: float) -> FloatArray:
     """Self-intersections: split into monotone pieces, intersect every pair of pieces."""
+    if is_point_like(curve, tol):
+        return np.empty((0, SPACE_COLS))  # a point has no self-intersection
     pieces: list[tuple[float, float, RationalBezier]] = []
     stack = [(0.0, 1.0, curve, 0)]
     while stack:

@@ -40,6 +40,7 @@ __all__ = [
     "RELATIVE_TOLERANCE",
     "ROUNDING_ULPS",
     "default_tolerance",
+    "is_point_like",
 ]
 
 RELATIVE_TOLERANCE: float = 1e-9
@@ -121,3 +122,18 @@ def _tolerance_of(extents: list[FloatArray], coords: list[FloatArray]) -> float:
     if not math.isfinite(tol) or tol <= 0.0:
         return 1e-300
     return tol
+
+
+def is_point_like(curve: RationalBezier, tol: float) -> bool:
+    """True when every control point lies within ``tol`` of the first one (model units).
+
+    A rational Bézier curve with positive weights lies in the convex hull of its control points,
+    so such a curve is a single point up to ``tol``: it has no self-intersection, and the
+    self-intersection paths answer at once instead of subdividing it to their depth limit.
+
+    >>> from relief_cad import RationalBezier
+    >>> is_point_like(RationalBezier([[1.0, 2.0, 3.0], [1.0, 2.0, 3.0 + 1e-17]]), 1e-12)
+    True
+    """
+    pts = curve.control_points
+    return bool(np.max(np.abs(pts - pts[0])) <= tol)
