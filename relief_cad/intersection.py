@@ -77,7 +77,7 @@ from .errors import (
 )
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
 from .space import intersect_space
-from .tolerances import default_tolerance
+from .tolerances import default_tolerance, rounding_floor
 
 __all__ = [
     "DEFAULT_BUDGET",
@@ -291,10 +291,13 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
         result: IntersectionList = intersect_space(a, b, tol=tol, budget=budget, on_budget=on_budget)
         return result
     if b is None:
-        ftol = check_tol(tol) or default_tolerance(a)
+        given = check_tol(tol)
+        ftol = default_tolerance(a) if given is None else max(given, rounding_floor(a))
         return finish(_self_planar(a.control_points, a.weights, ftol, nbudget), on_budget)
-    # tol <= 0 asks the kernel for default_tolerance(a, b)
-    ftol = check_tol(tol) or -1.0
+    # tol <= 0 asks the kernel for default_tolerance(a, b); a given tol is raised to the data's
+    # rounding level (tolerances.rounding_floor)
+    given = check_tol(tol)
+    ftol = -1.0 if given is None else max(given, rounding_floor(a, b))
     return finish(_planar(a.control_points, a.weights, b.control_points, b.weights, ftol, nbudget,
                            trusted=True), on_budget)
 

@@ -56,7 +56,7 @@ from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError
 from .relief import ReliefPerspective, central_projection
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
-from .tolerances import default_tolerance, is_point_like
+from .tolerances import default_tolerance, is_point_like, rounding_floor
 
 __all__ = ["ReliefFrame", "ReliefScheme", "intersect_space", "relief_scheme"]
 
@@ -340,6 +340,8 @@ def intersect_space(
     check_on_budget(on_budget)
     nbudget = check_budget(budget)
     ftol = check_tol(tol)
+    if ftol is not None:  # a given tol is raised to the data's rounding level
+        ftol = max(ftol, rounding_floor(a3) if b is None else rounding_floor(a3, b))
     if b is None:
         rows = _self_rows(a3, default_tolerance(a3) if ftol is None else ftol, nbudget, k)
     else:

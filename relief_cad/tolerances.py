@@ -41,6 +41,7 @@ __all__ = [
     "ROUNDING_ULPS",
     "default_tolerance",
     "is_point_like",
+    "rounding_floor",
 ]
 
 RELATIVE_TOLERANCE: float = 1e-9
@@ -137,3 +138,18 @@ def is_point_like(curve: RationalBezier, tol: float) -> bool:
     """
     pts = curve.control_points
     return bool(np.max(np.abs(pts - pts[0])) <= tol)
+
+
+def rounding_floor(*curves: RationalBezier) -> float:
+    """The rounding level of the data: ``ROUNDING_ULPS * eps * max |x|`` over all control points.
+
+    Every tolerance (given or default) is raised to at least this distance, because points
+    computed from such coordinates are only known to about that accuracy: two lines crossing at
+    1e-16 apart in rounding are still a crossing. No product is formed, so nothing overflows.
+
+    >>> from relief_cad import RationalBezier
+    >>> rounding_floor(RationalBezier([[0.0, 0.0], [1.0, 2.0]])) == ROUNDING_ULPS * _EPS * 2.0
+    True
+    """
+    big = max(float(np.max(np.abs(c.control_points))) for c in curves)
+    return max(ROUNDING_ULPS * _EPS * big, 1e-300)

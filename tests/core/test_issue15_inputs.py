@@ -105,3 +105,15 @@ def test_default_tolerance_at_max_degree_measures_the_curve() -> None:
     samples = c.evaluate(np.linspace(0, 1, 1001))
     size = float(np.linalg.norm(samples.max(axis=0) - samples.min(axis=0)))
     assert default_tolerance(c) == pytest.approx(1e-9 * size, rel=0.05)
+
+
+@pytest.mark.parametrize("tol", [1e-16, 1e-300, 5e-324])
+@pytest.mark.parametrize("dim", [2, 3])
+def test_tolerance_below_rounding_still_finds_the_crossing(tol: float, dim: int) -> None:
+    a = RationalBezier([[-2, 0.3], [2, -0.2]]).embedded(dim)
+    b = RationalBezier([[0.1, -2], [0.2, 2]]).embedded(dim)
+    default = intersect(a, b)
+    tiny = intersect(a, b, tol=tol)
+    assert len(default) == 1
+    assert len(tiny) == 1
+    assert tiny[0].t == pytest.approx(default[0].t, abs=1e-12)
