@@ -1,12 +1,8 @@
-"""Command line of the relief_cad workbench (``python -m workbench`` / ``relief-cad-workbench``).
+"""Command line of the relief_cad workbench (relief-cad-workbench, or python -m relief_cad_workbench).
 
-Subcommands::
-
-    corpus      build a corpus file (random families, glyphs, sketches, STEP files)
-    compare     relief_cad vs OCCT on every pair of a corpus (parallel, Dask, resumable)
-    report      a self-contained HTML report of a compare run
-    bench       the benchmarks (planar, cad, space) as a table and JSON
-    quickstart  compare + report on the bundled corpus into ./relief_cad_report/
+Exit status: 0 everything asked for was done; 1 some items or inputs failed (they are listed);
+2 unusable input (one line says why); 3 stopped before the end (--stop-after); 130 interrupted
+(Ctrl-C or SIGTERM; run the same command again to resume).
 """
 
 from __future__ import annotations
@@ -14,51 +10,162 @@ from __future__ import annotations
 import argparse
 import sys
 import time
-from collections.abc import Iterator
 from pathlib import Path
+from typing import Any
 
-__all__ = ["main"]
+__all__ = [
+    "main",
+    "build_parser",
+    "EXIT_OK",
+    "EXIT_FAILED",
+    "EXIT_BAD_INPUT",
+    "EXIT_INCOMPLETE",
+    "EXIT_INTERRUPTED",
+]
+
+EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT, EXIT_INCOMPLETE, EXIT_INTERRUPTED = 0, 1, 2, 3, 130
+
+DESCRIPTION = """\
+Compare relief_cad's curve/curve intersections with OpenCASCADE's on whole corpora of edge
+pairs; where the two disagree, a 50-digit arbiter decides who is right.
+
+commands:
+  corpus      build a corpus file (random families, glyphs, sketches, STEP files)
+  compare     relief_cad vs OCCT on every pair of a corpus, or of STEP files given directly
+              (all cores, or a Dask cluster; resumable)
+  report      a self-contained HTML report of one or several compare runs
+  bench       the benchmarks (planar, cad, space) as tables and JSON
+  quickstart  compare + report on the bundled corpus into ./relief_cad_report/
+
+exit status: 0 everything asked for was done; 1 some items or inputs failed (listed);
+2 unusable input; 3 stopped early (--stop-after); 130 interrupted (run again to resume)
+"""
+
+
+class _Usage(Exception):
+    """Unusable input: printed as one ``error:`` line, exit status 2."""
+
+
+def _say(msg: str) -> None:
+    print(msg, file=sys.stderr)
 
 
 def _cmd_corpus(args: argparse.Namespace) -> int:
-    from .corpus import RANDOM_FAMILIES, CorpusError, Item, build_corpus, bundled_items, write_corpus
+    from .corpus import RANDOM_FAMILIES, CorpusError, build_corpus, bundled_items, write_corpus
 
     fams = args.families.split(",") if args.families else list(RANDOM_FAMILIES) + ["glyph", "sketch", "step"]
     problems: list[str] = []
     source = bundled_items() if args.bundled else build_corpus(fams, args.count, args.seed, args.step or ())
 
-    def items() -> Iterator[Item]:
+    def items() -> Any:
         for it in source:
             if isinstance(it, CorpusError):
                 problems.append(str(it))
-                print(f"skipped: {it}", file=sys.stderr)
+                _say(f"skipped: {it}")
                 continue
             yield it
 
     try:
         n = write_corpus(args.out, items())
     except CorpusError as exc:
-        print(f"error: {exc}", file=sys.stderr)
-        return 2
+        raise _Usage(str(exc)) from None
     print(
         f"wrote {n} items ({', '.join(fams)}) to {args.out}"
         + (f"; {len(problems)} input(s) skipped" if problems else "")
     )
-    return 0
+    if n == 0:
+        raise _Usage(f"no items: every input was skipped, {args.out} is empty")
+    return EXIT_FAILED if problems else EXIT_OK
+
+
+def _is_step(p: Path) -> bool:
+    if p.is_dir() or p.suffix.lower() in (".step", ".stp"):
+        return True
+    try:
+        with open(p, "rb") as f:
+            return f.read(12) == b"ISO-10303-21"
+    except OSError:
+        return False
+
+
+def _step_corpus(inputs: list[Path], out: Path, count: int, within: bool) -> tuple[Path, list[str]]:
+    """Build a corpus from STEP files/folders into ``out``; returns its path and the skipped inputs."""
+    import hashlib
+    import os
+
+    from .corpus import CorpusError, step_family, write_corpus
+
+    skipped: list[str] = []
+
+    def items() -> Any:
+        for it in step_family(inputs, count, across=not within):
+            if isinstance(it, CorpusError):
+                skipped.append(str(it))
+                _say(f"skipped: {it}")
+            else:
+                yield it
+
+    out.mkdir(parents=True, exist_ok=True)
+    tmp = out / f".corpus-{os.getpid()}.jsonl"
+    n = write_corpus(tmp, items())
+    if n == 0:
+        tmp.unlink(missing_ok=True)
+        raise _Usage(f"no edge pairs from {', '.join(map(str, inputs))}: no usable STEP input")
+    digest = hashlib.sha256(tmp.read_bytes()).hexdigest()[:12]
+    final = out / f"step-corpus-{digest}.jsonl"
+    tmp.replace(final)
+    mode = "within each file" if within or len(inputs) < 2 else "across the files"
+    _say(f"built {n} STEP edge pairs ({mode}) into {final}")
+    return final, skipped
+
+
+def _corpus_of(args: argparse.Namespace) -> tuple[Path, list[str]]:
+    from .corpus import bundled_corpus_path
+
+    inputs = [Path(x) for x in args.inputs]
+    if not inputs:
+        return bundled_corpus_path(), []
+    missing = [p for p in inputs if not p.exists()]
+    if missing:
+        raise _Usage(f"{missing[0]}: no such file or folder")
+    steps = [p for p in inputs if _is_step(p)]
+    if steps:
+        if len(steps) != len(inputs):
+            raise _Usage("expected either one corpus file or STEP files/folders, received a mix of both")
+        return _step_corpus(steps, Path(args.out), args.count, args.within)
+    if len(inputs) > 1:
+        raise _Usage(
+            f"expected one corpus file, received {len(inputs)} (merge them with corpus, or run each)"
+        )
+    return inputs[0], []
+
+
+def _finish(summary: dict[str, Any], skipped: list[str], results: Path, t0: float) -> int:
+    from .run import format_summary
+
+    print(format_summary(summary))
+    for s in skipped:
+        print(f"skipped input: {s}")
+    took = f"{time.perf_counter() - t0:.1f} s"
+    if summary.get("interrupted"):
+        print(f"INTERRUPTED: {results} holds what was done; run the same command again to resume ({took})")
+        return EXIT_INTERRUPTED
+    if not summary.get("complete"):
+        print(f"STOPPED before the end: results in {results}; run again to resume ({took})")
+        return EXIT_INCOMPLETE
+    failed = len(summary.get("errors") or []) + len(skipped)
+    state = f"complete, {failed} failure(s) listed above" if failed else "complete"
+    print(f"{state}: results in {results} ({took})")
+    return EXIT_FAILED if failed else EXIT_OK
 
 
 def _cmd_compare(args: argparse.Namespace) -> int:
-    from .corpus import bundled_corpus_path
-    from .run import format_summary, run_compare
+    from .corpus import check_corpus
+    from .run import run_compare
 
-    corpus = args.corpus or bundled_corpus_path()
-    if not Path(corpus).is_file():
-        print(
-            f"error: expected a corpus file (python -m workbench corpus OUT makes one), received {corpus}",
-            file=sys.stderr,
-        )
-        return 2
     t0 = time.perf_counter()
+    corpus, skipped = _corpus_of(args)
+    info = check_corpus(corpus)
     summary = run_compare(
         corpus,
         args.out,
@@ -67,65 +174,124 @@ def _cmd_compare(args: argparse.Namespace) -> int:
         limit=args.limit,
         progress=not args.quiet,
         stop_after=args.stop_after,
+        fresh=args.fresh,
+        info=info,
+        say=_say,
     )
-    print(format_summary(summary))
-    state = "complete" if summary.get("complete") else "INTERRUPTED (run again to resume)"
-    print(f"{state}: results in {Path(args.out) / 'results.jsonl'} ({time.perf_counter() - t0:.1f} s)")
-    return 0 if summary.get("complete") else 3
+    return _finish(summary, skipped, Path(args.out) / "results.jsonl", t0)
 
 
 def _cmd_report(args: argparse.Namespace) -> int:
     from .report import write_report
 
-    path = write_report(
-        args.results,
-        args.out or (Path(args.results) if Path(args.results).is_dir() else Path(args.results).parent),
-        corpus=args.corpus,
-        max_pictures=args.max_pictures,
-    )
+    paths = [Path(x) for x in args.results]
+    out = Path(args.out) if args.out else (paths[0] if paths[0].is_dir() else paths[0].parent)
+    path = write_report(paths, out, corpus=args.corpus, max_pictures=args.max_pictures)
     print(f"report written to {path.resolve()}")
-    return 0
+    return EXIT_OK
 
 
 def _cmd_bench(args: argparse.Namespace) -> int:
     from .bench import run_bench
 
     res = run_bench(args.names or ["all"], args.json)
-    return 0 if all(v.get("status") == "ok" for v in res.values()) else 1
+    return EXIT_OK if all(v.get("status") == "ok" for v in res.values()) else EXIT_FAILED
 
 
 def _cmd_quickstart(args: argparse.Namespace) -> int:
-    from .corpus import bundled_corpus_path
+    from .corpus import bundled_corpus_path, check_corpus
     from .report import write_report
-    from .run import format_summary, run_compare
+    from .run import ResultsMismatchError, open_results, read_header, run_compare
+    from .versions import tool_versions
 
-    out = Path(args.out)
-    print(f"comparing relief_cad with OCCT on the bundled corpus ({bundled_corpus_path().name}) ...")
-    summary = run_compare(bundled_corpus_path(), out, workers=args.workers, progress=not args.quiet)
-    print(format_summary(summary))
-    path = write_report(out, out, corpus=bundled_corpus_path())
-    print(f"\nreport: {path.resolve()}\n(open it in a browser; it is a single self-contained file)")
-    return 0
-
-
-def build_parser() -> argparse.ArgumentParser:
-    """The argument parser of the workbench command line."""
-    p = argparse.ArgumentParser(
-        prog="python -m workbench", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    out, corpus, t0 = Path(args.out), bundled_corpus_path(), time.perf_counter()
+    info, results = check_corpus(corpus), out / "results.jsonl"
+    fresh = args.fresh
+    if not fresh and read_header(results) is not None:
+        try:
+            open_results(results, info, tool_versions())
+            _say(f"reusing the results in {results} (same corpus, same code and tool versions)")
+        except ResultsMismatchError as exc:
+            _say(f"{str(exc).split('; give')[0]}: running again from scratch")
+            fresh = True
+    print(f"comparing relief_cad with OCCT on the bundled corpus ({corpus.name}) ...")
+    summary = run_compare(
+        corpus, out, workers=args.workers, progress=not args.quiet, fresh=fresh, info=info, say=_say
     )
-    sub = p.add_subparsers(dest="command", required=True)
+    code = _finish(summary, [], results, t0)
+    path = write_report([out], out, corpus=corpus)
+    print(f"\nreport: {path.resolve()}\n(open it in a browser; it is a single self-contained file)")
+    return code
 
-    c = sub.add_parser("corpus", help="build a corpus file")
+
+def _prog() -> str:
+    name = Path(sys.argv[0]).name if sys.argv and sys.argv[0] else ""
+    if name and name not in ("__main__.py", "-c", "-m"):
+        return name
+    return f"python -m {__package__ or 'relief_cad_workbench'}"
+
+
+def _add_compare(sub: Any) -> None:
+    m = sub.add_parser(
+        "compare",
+        help="relief_cad vs OCCT on every pair of a corpus, or of STEP files",
+        description="Compare relief_cad with OCCT on every pair of a corpus file (made by the corpus "
+        "command), or of STEP files and folders given directly: their edges are paired on the fly "
+        "(across the files; --within for pairs inside each file). Resumes an interrupted run in the "
+        "same --out folder; refuses a folder holding another corpus's results unless --fresh.",
+    )
+    m.add_argument(
+        "inputs",
+        nargs="*",
+        metavar="INPUT",
+        help="a corpus file (.jsonl / .jsonl.gz), or STEP files/folders (default: the bundled corpus)",
+    )
+    m.add_argument("--out", default="relief_cad_compare", help="output folder (default ./relief_cad_compare)")
+    m.add_argument("--fresh", action="store_true", help="discard the results already in --out and start over")
+    m.add_argument(
+        "--within",
+        action="store_true",
+        help="STEP inputs: pair edges within each file instead of across the files",
+    )
+    m.add_argument(
+        "--count", type=int, default=200, help="STEP inputs: edge pairs to build in all (default 200)"
+    )
+    m.add_argument(
+        "--workers", type=int, default=None, help="worker processes (default: all cores; 1: in this process)"
+    )
+    m.add_argument(
+        "--scheduler",
+        default=None,
+        help="Dask scheduler address, e.g. tcp://10.0.0.1:8786 (instead of local processes)",
+    )
+    m.add_argument("--limit", type=int, default=None, help="only the first N items of the corpus")
+    m.add_argument("--quiet", action="store_true", help="no progress bar")
+    m.add_argument(
+        "--stop-after",
+        type=int,
+        default=None,
+        metavar="N",
+        help="stop after N new results, as an interruption would (exit status 3; for testing resume)",
+    )
+    m.set_defaults(func=_cmd_compare)
+
+
+def _add_corpus(sub: Any) -> None:
+    c = sub.add_parser(
+        "corpus",
+        help="build a corpus file",
+        description="Build a corpus file of edge pairs (JSON lines of OCCT BREP text).",
+    )
     c.add_argument("out", help="output file (.jsonl or .jsonl.gz)")
     c.add_argument(
         "--families",
         default="",
         help="comma-separated families (default: all); random: cubic, "
-        "rational, high-degree, ill-conditioned, tangent, overlap, shared-end, near-miss, scaled, space; "
-        "CAD: glyph, sketch, step",
+        "rational, high-degree, ill-conditioned, tangent, overlap, shared-end, near-miss, scaled, "
+        "space; CAD: glyph, sketch, step",
     )
     c.add_argument("--count", type=int, default=20, help="items per family (default 20)")
-    c.add_argument("--seed", type=int, default=0)
+    c.add_argument("--seed", type=int, default=0, help="seed of the random families (default 0)")
     c.add_argument(
         "--step",
         action="append",
@@ -134,49 +300,64 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument(
         "--bundled",
         action="store_true",
-        help="write the bundled corpus's recipe (ignores the "
-        "other options; this is how workbench/data/bundled.jsonl.gz is made)",
+        help="write the bundled corpus's recipe (ignores the other "
+        "options; this is how workbench/data/bundled.jsonl.gz is made)",
     )
     c.set_defaults(func=_cmd_corpus)
 
-    m = sub.add_parser("compare", help="relief_cad vs OCCT on every pair of a corpus")
-    m.add_argument("corpus", nargs="?", help="corpus file (default: the bundled corpus)")
-    m.add_argument("--out", default="relief_cad_compare", help="output folder (default ./relief_cad_compare)")
-    m.add_argument("--workers", type=int, default=None, help="processes (default: all cores)")
-    m.add_argument("--scheduler", default=None, help="Dask scheduler address, e.g. tcp://10.0.0.1:8786")
-    m.add_argument("--limit", type=int, default=None, help="only the first N items")
-    m.add_argument("--quiet", action="store_true", help="no progress bar")
-    m.add_argument("--stop-after", type=int, default=None, help=argparse.SUPPRESS)
-    m.set_defaults(func=_cmd_compare)
 
-    r = sub.add_parser("report", help="HTML report of a compare run")
-    r.add_argument("results", help="compare output folder or its results.jsonl")
-    r.add_argument("--out", default=None, help="output folder (default: next to the results)")
-    r.add_argument("--corpus", default=None, help="the corpus (default: as recorded by compare)")
-    r.add_argument("--max-pictures", type=int, default=200)
+def build_parser() -> argparse.ArgumentParser:
+    """The argument parser of the workbench command line."""
+    p = argparse.ArgumentParser(
+        prog=_prog(), description=DESCRIPTION, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
+    sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    _add_corpus(sub)
+    _add_compare(sub)
+    r = sub.add_parser(
+        "report",
+        help="HTML report of one or several compare runs",
+        description="Write a self-contained HTML report. Several results (one compare run "
+        "per OCCT version on the same corpus) get one column per version.",
+    )
+    r.add_argument("results", nargs="+", help="compare output folder(s) or their results.jsonl")
+    r.add_argument("--out", default=None, help="output folder (default: next to the first results)")
+    r.add_argument(
+        "--corpus", default=None, help="the corpus, for the pictures (default: as recorded by compare)"
+    )
+    r.add_argument("--max-pictures", type=int, default=200, help="at most this many pictures (default 200)")
     r.set_defaults(func=_cmd_report)
-
     b = sub.add_parser("bench", help="benchmarks: planar, cad, space (default all)")
     b.add_argument("names", nargs="*", help="planar, cad, space or all")
     b.add_argument("--json", default="bench.json", help="write results here (default bench.json)")
     b.set_defaults(func=_cmd_bench)
-
-    q = sub.add_parser("quickstart", help="compare + report on the bundled corpus")
+    q = sub.add_parser(
+        "quickstart",
+        help="compare + report on the bundled corpus",
+        description="Compare + report on the bundled corpus. Reuses the results in --out when "
+        "they were made by the same code and tools, and says so; reruns them otherwise.",
+    )
     q.add_argument("--out", default="relief_cad_report", help="output folder (default ./relief_cad_report)")
-    q.add_argument("--workers", type=int, default=None)
-    q.add_argument("--quiet", action="store_true")
+    q.add_argument("--workers", type=int, default=None, help="worker processes (default: all cores)")
+    q.add_argument("--fresh", action="store_true", help="recompute even when the results could be reused")
+    q.add_argument("--quiet", action="store_true", help="no progress bar")
     q.set_defaults(func=_cmd_quickstart)
     return p
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the workbench command line; returns the exit status."""
+    """Run the workbench command line; returns the exit status (see the module docstring)."""
+    from relief_cad.errors import ReliefCadError
+
     args = build_parser().parse_args(argv)
     try:
         return int(args.func(args))
+    except (_Usage, ReliefCadError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return EXIT_BAD_INPUT
     except KeyboardInterrupt:
         print("\ninterrupted; run the same command again to resume", file=sys.stderr)
-        return 130
+        return EXIT_INTERRUPTED
 
 
 if __name__ == "__main__":

@@ -20,10 +20,11 @@ from typing import Any
 
 __all__ = ["BENCHMARKS", "run_bench", "format_rows", "format_result"]
 
+_PKG = __package__ or "relief_cad_workbench"  # "workbench" when run from a source checkout
 BENCHMARKS = {
-    "planar": "workbench.bench_planar",
-    "cad": "workbench.bench_cad",
-    "space": "workbench.bench_space",
+    "planar": f"{_PKG}.bench_planar",
+    "cad": f"{_PKG}.bench_cad",
+    "space": f"{_PKG}.bench_space",
 }
 
 

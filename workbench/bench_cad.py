@@ -168,7 +168,7 @@ def main() -> None:
     """Print the benchmark table."""
     res = run()
     try:
-        from workbench.bench import format_rows
+        from .bench import format_rows
     except ImportError:  # pragma: no cover
         for r in res["rows"]:
             print(r)

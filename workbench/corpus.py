@@ -43,6 +43,8 @@ from typing import Any
 
 import numpy as np
 
+from relief_cad.errors import ReliefCadError
+
 __all__ = [
     "RANDOM_FAMILIES",
     "CAD_FAMILIES",
@@ -58,6 +60,10 @@ __all__ = [
     "glyph_family",
     "sketch_family",
     "step_family",
+    "step_files",
+    "read_step",
+    "check_corpus",
+    "CorpusInfo",
     "build_corpus",
     "bundled_items",
     "pair_text",
@@ -81,7 +87,7 @@ CAD_FAMILIES = ("glyph", "sketch", "step")
 DATA_DIR = Path(__file__).resolve().parent / "data"
 
 
-class CorpusError(ValueError):
+class CorpusError(ReliefCadError, ValueError):
     """A corpus line or input file that cannot be used (the reason is in the message)."""
 
 
@@ -179,6 +185,10 @@ def read_shape(text: str) -> Any:
     shape = TopoDS_Shape()
     try:
         BRepTools.Read_s(shape, io.BytesIO(text.encode("ascii")), BRep_Builder())
+    except UnicodeEncodeError as exc:
+        raise CorpusError(
+            f"unreadable BREP text: expected ASCII, received {exc.object[exc.start : exc.end]!r}"
+        ) from None
     except Exception as exc:  # noqa: BLE001
         raise CorpusError(f"unreadable BREP text: {exc}") from exc
     if shape.IsNull():
@@ -207,36 +217,124 @@ def write_corpus(path: str | os.PathLike[str], items: Iterable[Item]) -> int:
     return n
 
 
-def read_corpus(path: str | os.PathLike[str]) -> Iterator[Item | CorpusError]:
-    """Yield the items of a corpus; a corrupt line yields a :class:`CorpusError` naming it."""
-    p = Path(path)
-    if not p.exists():
-        raise CorpusError(f"corpus file {p} does not exist")
+GZIP_MAGIC = b"\x1f\x8b"
+
+
+def _raw_lines(p: Path) -> Iterator[bytes]:
+    """The file's lines as bytes (gunzipped when it is gzip data, whatever its name)."""
+    with open(p, "rb") as f:
+        gz = f.read(2) == GZIP_MAGIC
+    if str(p).endswith(".gz") and not gz:
+        raise CorpusError(f"{p}: named .gz but is not gzip data")
+    with gzip.open(p, "rb") if gz else open(p, "rb") as f:
+        yield from f
+
+
+def _parse_line(raw: bytes, lineno: int, name: str) -> Item | CorpusError:
     try:
-        with _open(p, "r") as f:
-            for lineno, line in enumerate(f, 1):
-                if not line.strip():
-                    continue
-                try:
-                    d = json.loads(line)
-                    if not isinstance(d, dict) or not isinstance(d.get("a"), str):
-                        raise ValueError("expected an object with BREP text in 'a'")
-                    yield Item(
-                        str(d.get("id", f"line-{lineno}")),
-                        str(d.get("family", "unknown")),
-                        d["a"],
-                        d.get("b"),
-                        d.get("tol"),
-                        d.get("meta") or {},
-                    )
-                except (ValueError, TypeError, KeyError) as exc:
-                    err = CorpusError(f"{p.name} line {lineno}: corrupt corpus line ({exc})")
-                    err.id = f"{p.name}:line-{lineno}"  # type: ignore[attr-defined]
-                    yield err
+        d = json.loads(raw.decode("utf-8"))
+        if not isinstance(d, dict) or not isinstance(d.get("a"), str):
+            raise ValueError("expected an object with BREP text in 'a'")
+        return Item(
+            str(d.get("id", f"line-{lineno}")),
+            str(d.get("family", "unknown")),
+            d["a"],
+            d.get("b"),
+            d.get("tol"),
+            d.get("meta") or {},
+        )
+    except UnicodeDecodeError as exc:
+        reason: Exception = ValueError(f"not UTF-8 text: byte {raw[exc.start : exc.start + 1]!r}")
+    except (ValueError, TypeError, KeyError) as exc:
+        reason = exc
+    err = CorpusError(f"{name} line {lineno}: corrupt corpus line ({reason})")
+    err.id = f"{name}:line-{lineno}"  # type: ignore[attr-defined]
+    return err
+
+
+def read_corpus(path: str | os.PathLike[str]) -> Iterator[Item | CorpusError]:
+    """Yield the items of a corpus; a corrupt line yields a :class:`CorpusError` naming it.
+
+    A line whose id was already used yields a :class:`CorpusError` with the id
+    ``<id>@line-<n>``, so that every line gets exactly one result.
+    """
+    p = Path(path)
+    if not p.is_file():
+        raise CorpusError(f"corpus file {p} does not exist")
+    seen: dict[str, int] = {}
+    try:
+        for lineno, raw in enumerate(_raw_lines(p), 1):
+            if not raw.strip():
+                continue
+            it = _parse_line(raw, lineno, p.name)
+            if isinstance(it, Item) and it.id in seen:
+                err = CorpusError(
+                    f"{p.name} line {lineno}: duplicate id {it.id!r} (first on line {seen[it.id]})"
+                )
+                err.id = f"{it.id}@line-{lineno}"  # type: ignore[attr-defined]
+                it = err
+            elif isinstance(it, Item):
+                seen[it.id] = lineno
+            yield it
     except (OSError, EOFError, gzip.BadGzipFile) as exc:
         err = CorpusError(f"{p.name}: unreadable after the last good line ({exc})")
         err.id = f"{p.name}:unreadable"  # type: ignore[attr-defined]
         yield err
+
+
+@dataclass
+class CorpusInfo:
+    """What :func:`check_corpus` found: item count, content hash, and the ids in order."""
+
+    path: Path
+    n_items: int
+    sha256: str
+    ids: list[str]
+
+
+def check_corpus(path: str | os.PathLike[str]) -> CorpusInfo:
+    """Read a whole corpus once: refuse an unusable file, else count, hash and list its ids.
+
+    Raises
+    ------
+    CorpusError
+        One line saying why the file is not a usable corpus: missing, a folder, named .gz
+        but not gzip, truncated gzip, binary or non-UTF-8 data, not JSON lines, or empty.
+        (Single corrupt lines in a good corpus are not refused: they become failed items.)
+    """
+    import hashlib
+
+    p = Path(path)
+    if not p.exists():
+        raise CorpusError(f"{p}: no such file")
+    if not p.is_file():
+        raise CorpusError(f"{p}: expected a corpus file, received a folder")
+    h = hashlib.sha256()
+    ids: list[str] = []
+    good = 0
+    try:
+        for raw in _raw_lines(p):
+            h.update(raw)
+    except (EOFError, gzip.BadGzipFile, OSError) as exc:
+        raise CorpusError(f"{p}: truncated or damaged gzip data ({exc})") from None
+    for it in read_corpus(p):
+        ids.append(str(getattr(it, "id", "?")))
+        good += isinstance(it, Item)
+    if not ids:
+        raise CorpusError(f"{p}: empty corpus (0 items)")
+    if not good:
+        raise CorpusError(f"{p}: {_not_a_corpus_reason(p)}")
+    return CorpusInfo(p, len(ids), h.hexdigest(), ids)
+
+
+def _not_a_corpus_reason(p: Path) -> str:
+    head = b"".join(line for _, line in zip(range(64), _raw_lines(p), strict=False))[:8192]
+    if head.startswith(b"ISO-10303-21"):
+        return "a STEP file, not a corpus (give it to compare directly, or to corpus --step)"
+    text = head.decode("utf-8", "replace")[:-3]  # the cut may split a character
+    if "\x00" in text or "\ufffd" in text:
+        return "not a corpus: binary data, not UTF-8 JSON lines"
+    return "not a corpus: no line is a JSON object with BREP text in 'a'"
 
 
 # --------------------------------------------------------------------------- Bézier helpers
@@ -526,74 +624,169 @@ def sketch_family(count: int, seed: int = 0) -> Iterator[Item]:
     return
 
 
-def step_family(paths: Iterable[str | os.PathLike[str]], count: int) -> Iterator[Item | CorpusError]:
-    """Pairs of edges of STEP files (files, or folders searched for ``*.step``/``*.stp``).
-
-    Pairs: edges of one face (neighbours share a vertex: the ``shared-end`` case of real parts)
-    and edges of different faces whose boxes meet. A broken file yields a :class:`CorpusError`.
-    """
-    from OCP.IFSelect import IFSelect_RetDone
-    from OCP.STEPControl import STEPControl_Reader
-    from OCP.TopAbs import TopAbs_FACE
-    from OCP.TopExp import TopExp_Explorer
-
-    from relief_cad.cad.occt import unique_edges
-
+def step_files(paths: Iterable[str | os.PathLike[str]]) -> list[Path]:
+    """The STEP files named: files as given, folders searched for ``*.step`` / ``*.stp``."""
     files: list[Path] = []
     for p in map(Path, paths):
         if p.is_dir():
             files += sorted(x for x in p.rglob("*") if x.suffix.lower() in (".step", ".stp"))
         else:
             files.append(p)
-    k = 0
-    for f in files:
-        reader = STEPControl_Reader()
+    return files
+
+
+def _quiet_fds() -> Any:
+    """A context manager sending C-level stdout/stderr to a temporary file, yielding it."""
+    import contextlib
+    import sys
+    import tempfile
+
+    @contextlib.contextmanager
+    def cm() -> Iterator[Any]:
+        sys.stdout.flush()
+        sys.stderr.flush()
+        saved = [os.dup(1), os.dup(2)]
+        with tempfile.TemporaryFile() as tmp:
+            try:
+                os.dup2(tmp.fileno(), 1)
+                os.dup2(tmp.fileno(), 2)
+                yield tmp
+            finally:
+                os.dup2(saved[0], 1)
+                os.dup2(saved[1], 2)
+                os.close(saved[0])
+                os.close(saved[1])
+
+    return cm()
+
+
+def read_step(path: str | os.PathLike[str]) -> Any:
+    """Read a STEP file into one ``TopoDS_Shape``; OCCT's console messages are captured.
+
+    Raises
+    ------
+    CorpusError
+        One line: the file is missing, or OCCT cannot read it (with OCCT's own reason), or
+        it holds no shape.
+    """
+    from OCP.IFSelect import IFSelect_RetDone
+    from OCP.STEPControl import STEPControl_Reader
+
+    p = Path(path)
+    if not p.is_file():
+        raise CorpusError(
+            f"{p}: no such file" if not p.exists() else f"{p}: expected a STEP file, received a folder"
+        )
+    reader = STEPControl_Reader()
+    with _quiet_fds() as tmp:
         try:
-            status = reader.ReadFile(str(f))
-        except Exception as exc:  # noqa: BLE001
-            status = None
-            reason = str(exc)
+            status = reader.ReadFile(str(p))
+        except Exception as exc:  # noqa: BLE001 - reported with the file name
+            status, extra = None, f"{type(exc).__name__}: {exc}"
         else:
-            reason = f"STEP reader status {status}"
-        if status != IFSelect_RetDone:
-            err = CorpusError(f"{f}: broken STEP file ({reason})")
+            extra = ""
+        if status == IFSelect_RetDone:
+            reader.TransferRoots()
+        tmp.seek(0)
+        noise = tmp.read().decode("utf-8", "replace")
+    if status != IFSelect_RetDone:
+        import re
+
+        plain = re.sub("\x1b\\[[0-9;]*m", "", noise)
+        said = [ln.strip(" *\t") for ln in plain.splitlines() if "ERR" in ln or "Error" in ln]
+        why = extra or (said[0] if said else f"reader status {getattr(status, 'name', status)}")
+        raise CorpusError(f"{p}: OCCT cannot read this STEP file ({why})")
+    shape = reader.OneShape()
+    if shape.IsNull():
+        raise CorpusError(f"{p}: STEP file holds no shape")
+    return shape
+
+
+def _usable_steps(paths: Iterable[str | os.PathLike[str]]) -> Iterator[tuple[Path, Any] | CorpusError]:
+    from relief_cad.cad.occt import unique_edges
+
+    for f in step_files(paths):
+        try:
+            shape = read_step(f)
+            if not unique_edges(shape):
+                raise CorpusError(f"{f}: STEP shape with no edges")
+        except CorpusError as err:
             err.id = f"step:{f.name}"  # type: ignore[attr-defined]
             yield err
             continue
-        reader.TransferRoots()
-        shape = reader.OneShape()
-        edges = unique_edges(shape) if not shape.IsNull() else []
-        if not edges:
-            err = CorpusError(f"{f}: shape with no edges")
-            err.id = f"step:{f.name}"  # type: ignore[attr-defined]
-            yield err
-            continue
-        faces = []
-        ex = TopExp_Explorer(shape, TopAbs_FACE)
-        while ex.More():
-            faces.append(ex.Current())
-            ex.Next()
-        per_file = max(1, count // max(1, len(files)))
-        got = 0
-        pairs = []
-        for face in faces:
-            pairs += _pairs_by_bbox(unique_edges(face), None, 6)
-        pairs += _pairs_by_bbox(edges, None, per_file)
+        yield f, shape
+
+
+def _faces(shape: Any) -> list[Any]:
+    from OCP.TopAbs import TopAbs_FACE
+    from OCP.TopExp import TopExp_Explorer
+
+    faces = []
+    ex = TopExp_Explorer(shape, TopAbs_FACE)
+    while ex.More():
+        faces.append(ex.Current())
+        ex.Next()
+    return faces
+
+
+def _within_pairs(shape: Any, limit: int) -> list[tuple[Any, Any]]:
+    from relief_cad.cad.occt import unique_edges
+
+    pairs = []
+    for face in _faces(shape):
+        pairs += _pairs_by_bbox(unique_edges(face), None, 6)
+    return pairs + _pairs_by_bbox(unique_edges(shape), None, limit)
+
+
+def step_family(
+    paths: Iterable[str | os.PathLike[str]], count: int, *, across: bool = False
+) -> Iterator[Item | CorpusError]:
+    """Pairs of edges of STEP files (files, or folders searched for ``*.step``/``*.stp``).
+
+    Within a file (default): edges of one face (neighbours share a vertex: the ``shared-end``
+    case of real parts) and edges of different faces whose boxes meet. With ``across``: an
+    edge of one file against an edge of another whose boxes meet (two parts laid together).
+    ``count`` is shared evenly among the files OCCT can read; each unusable file yields one
+    :class:`CorpusError` and takes no share.
+    """
+    from relief_cad.cad.occt import unique_edges
+
+    usable: list[tuple[Path, Any]] = []
+    for got in _usable_steps(paths):
+        if isinstance(got, CorpusError):
+            yield got
+        else:
+            usable.append(got)
+    groups: list[tuple[str, str, list[tuple[Any, Any]]]] = []
+    if across and len(usable) >= 2:
+        per = max(1, count // (len(usable) * (len(usable) - 1) // 2))
+        for i, (fa, sa) in enumerate(usable):
+            for fb, sb in usable[i + 1 :]:
+                pairs = _pairs_by_bbox(unique_edges(sa), unique_edges(sb), per)
+                groups.append((f"{fa.stem}+{fb.stem}", f"{fa.name} + {fb.name}", pairs))
+    else:
+        per = max(1, count // max(1, len(usable)))
+        groups = [(f.stem, f.name, _within_pairs(shape, per)) for f, shape in usable]
+    k = 0
+    for name, file_meta, pairs in groups:
+        got_n = 0
         seen: set[tuple[int, int]] = set()
         for a, b in pairs:
             key = (hash(a), hash(b))
             if key in seen:
                 continue
             seen.add(key)
-            if got >= per_file or k >= count:
+            if got_n >= per or k >= count:
                 break
-            yield Item(f"step-{f.stem}-{got:06d}", "step", pair_text(a, b), PAIR_MARK, None, {"file": f.name})
-            got += 1
+            yield Item(
+                f"step-{name}-{got_n:06d}", "step", pair_text(a, b), PAIR_MARK, None, {"file": file_meta}
+            )
+            got_n += 1
             k += 1
 
 
 BUNDLED_RECIPE = {"random_count": 8, "cad_count": 14, "seed": 7}
-"""How ``workbench/data/bundled.jsonl.gz`` is made (``python -m workbench corpus --bundled OUT``)."""
+"""How ``workbench/data/bundled.jsonl.gz`` is made (``relief-cad-workbench corpus --bundled OUT``)."""
 
 
 def bundled_items() -> Iterator[Item | CorpusError]:

@@ -1,308 +1,340 @@
-"""``report``: a self-contained HTML report of a compare run (viewable offline).
+"""``report``: a self-contained HTML report of one or several compare runs (viewable offline).
 
-One file, no external assets: summary tables by family and by OCCT route, histograms of
-each side's distance to the arbiter's true point on agreed points, a histogram of the
-per-pair time ratio OCCT/relief_cad, the failed items with their reasons, and a picture
-(inline PNG) of every disagreement with both answers marked (relief_cad: blue circles /
-thick blue stretches; OCCT: red crosses / thin red stretches; the disputed result ringed
-in orange) next to the arbiter's verdict.
+The page opens with a conclusion: what was compared, who was right how often, and where
+each side fails, by kind (:mod:`workbench.findings`). Then: one column set per OCCT version
+when several results files are given (one ``compare`` run per OCCT version on the same
+corpus), the summary tables, full-width histograms, the slowest pairs with the likely
+reason, the failed items, every disagreement (repeated copies grouped into one row with a
+count) with a picture that has a legend and a zoomed inset per disputed spot, and a
+glossary of every column. HTML comes from a jinja2 template with autoescape on.
 """
 
 from __future__ import annotations
 
 import base64
 import datetime as _dt
-import html
-import io
-import json
 import math
+import statistics
+from collections.abc import Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from relief_cad.errors import ReliefCadError
+
 from .corpus import Item, read_corpus
-from .run import _COLS, load_results, summarize
+from .findings import KINDS, findings, tally
+from .plots import Picture, hist_png, pair_png
+from .run import _COLS, RATIO_NOTE, agreed_counts, load_results, read_header, speed_ratio, summarize
+from .versions import occt_label
 
-__all__ = ["write_report"]
-
-_CSS = """
-body{font-family:DejaVu Sans,Arial,sans-serif;margin:1.5em;color:#222;max-width:1200px}
-h1{font-size:1.5em}h2{font-size:1.2em;border-bottom:1px solid #ccc;margin-top:1.6em}
-table{border-collapse:collapse;margin:.5em 0;font-size:.85em}
-td,th{border:1px solid #bbb;padding:2px 6px;text-align:right}
-th{background:#eef}td.l,th.l{text-align:left}
-.card{border:1px solid #ccc;border-radius:4px;padding:.6em;margin:.8em 0;
-  display:flex;gap:1em;align-items:flex-start}
-.card img{flex:none}.card .txt{font-size:.85em}
-.win-relief_cad{color:#1565c0;font-weight:bold}.win-occt{color:#c62828;font-weight:bold}
-.win-neither{color:#6d4c41;font-weight:bold}.small{font-size:.8em;color:#555}
-"""
+__all__ = ["write_report", "ReportInputError", "GLOSSARY"]
 
 
-def _png_b64(png: bytes) -> str:
-    return base64.b64encode(png).decode("ascii")
+class ReportInputError(ReliefCadError, ValueError):
+    """A results path the report cannot use (missing, no results file in the folder, no records)."""
 
 
-def _img(png: bytes, alt: str) -> str:
-    if not png:
-        return f"<p class='small'>(no picture: {html.escape(alt)})</p>"
-    return f'<img alt="{html.escape(alt)}" src="data:image/png;base64,{_png_b64(png)}"/>'
+GLOSSARY = {
+    "pairs": "corpus items (an edge pair, or one shape for its self-intersections)",
+    "err": "items that could not be compared at all (unreadable BREP, no edges, a crash); listed below",
+    "agreed": "points both sides report, within tol of each other and of the arbiter's true point",
+    "loose": "points both report that match only after refinement, or with one side farther than tol "
+    "from the true point (counted apart from agreed)",
+    "pairs≠": "items with at least one disagreement",
+    "relief✓": "disagreements the arbiter decided for relief_cad",
+    "occt✓": "disagreements the arbiter decided for OCCT",
+    "neither": "disagreements where both sides are wrong",
+    "relief~ / occt~": "points of that side farther than tol from the arbiter's true point",
+    "µs relief / µs OCCT": "mean wall time per item of one call in a worker process (after a warm-up)",
+    "ratio": RATIO_NOTE,
+    "route": "the OCCT algorithm that answered: Geom2dInt_GInter (planar), IntTools_EdgeEdge (space), "
+    "BRepAlgoAPI_Section (fallback); (none) means OCCT reported nothing, so no route was recorded",
+    "finding": "one kind of mistake by one side in one pair; repeated copies of one point are one "
+    "finding with a count",
+    "kinds of mistake": "missed: a true point not reported; spurious: a point that is not there; "
+    "duplicate copies: the same point reported again; misplaced: a point reported off its true place; "
+    "tangency as a segment: a tangent point reported as an overlap; overlap in pieces: an overlap "
+    "reported as points or as part of its range; both wrong: the arbiter agrees with neither side",
+}
 
 
-def _hist_png(series: dict[str, list[float]], xlabel: str, title: str) -> bytes:
-    try:
-        import matplotlib
+@dataclass
+class Run:
+    """One results file: where it is, its header, records, summary and column label."""
 
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:  # pragma: no cover
-        return b""
-    fig, ax = plt.subplots(figsize=(5.5, 3.0), dpi=72)
-    data = {k: [x for x in v if math.isfinite(x)] for k, v in series.items()}
-    allv = [x for v in data.values() for x in v]
-    if allv:
-        lo, hi = min(allv), max(allv)
-        if hi - lo < 1:
-            lo, hi = lo - 0.5, hi + 0.5
-        bins = [lo + (hi - lo) * i / 30 for i in range(31)]
-        for (name, v), color in zip(data.items(), ("tab:blue", "tab:red", "tab:green"), strict=False):
-            if v:
-                ax.hist(v, bins=bins, alpha=0.55, label=f"{name} (n={len(v)})", color=color)
-        ax.legend(fontsize=7)
-    else:
-        ax.text(0.5, 0.5, "no data", ha="center", va="center", transform=ax.transAxes)
-    ax.set_xlabel(xlabel, fontsize=8)
-    ax.set_title(title, fontsize=9)
-    ax.tick_params(labelsize=7)
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", bbox_inches="tight")
-    plt.close(fig)
-    return buf.getvalue()
+    path: Path
+    header: dict[str, Any]
+    recs: list[dict[str, Any]]
+    summary: dict[str, Any]
+    label: str
 
 
-def _table(summary: dict[str, Any], key: str, title: str) -> str:
+def _results_file(p: Path) -> Path:
+    if p.is_dir():
+        if not (p / "results.jsonl").is_file():
+            raise ReportInputError(f"{p}: no results.jsonl in this folder (compare --out {p} makes one)")
+        return p / "results.jsonl"
+    if not p.exists():
+        raise ReportInputError(f"{p}: no such results file or folder")
+    return p
+
+
+def load_run(path: str | Path) -> Run:
+    """Read one results file (or compare folder) for the report; :class:`ReportInputError` if unusable."""
+    rp = _results_file(Path(path))
+    recs = load_results(rp)
+    if not recs:
+        raise ReportInputError(f"{rp}: no results in this file (expected lines written by compare)")
+    head = read_header(rp) or {}
+    label = occt_label(head.get("versions", {})) if head else rp.parent.name
+    return Run(rp, head, recs, summarize(recs), label)
+
+
+def _b64(pic: Picture | None) -> str:
+    return base64.b64encode(pic.png).decode("ascii") if pic and pic.png else ""
+
+
+def _ms(r: dict[str, Any], side: str) -> float:
+    return 1e6 * float(r.get("times", {}).get(side, 0.0))
+
+
+def _slow_reason(r: dict[str, Any]) -> str:
+    meta, fam = r.get("meta") or {}, r.get("family", "")
+    if "degrees" in meta or "degree" in meta:
+        return f"high degree {meta.get('degrees', meta.get('degree'))}: clipping cost grows with the degree"
+    if fam in ("tangent", "near-miss") or any(x.get("kind") == "tangent" for x in r.get("relief", [])):
+        return "tangency: Bézier clipping converges only linearly at a double root"
+    if any(x.get("type") == "overlap" for x in r.get("relief", [])):
+        return "overlap: both ends are located and the whole range is checked"
+    if fam in ("glyph", "sketch", "step"):
+        return "CAD edge: the time includes converting the B-spline into Bézier segments"
+    return "not known"
+
+
+def _slowest(recs: list[dict[str, Any]], n: int = 15) -> list[dict[str, Any]]:
+    rows = []
+    for r in recs:
+        tr, to = _ms(r, "relief_cad"), _ms(r, "occt")
+        if r.get("status") == "ok" and tr > 0 and to > 0:
+            rows.append(
+                {
+                    "id": r["id"],
+                    "family": r.get("family", ""),
+                    "relief": tr,
+                    "occt": to,
+                    "ratio": speed_ratio(tr, to),
+                    "reason": _slow_reason(r),
+                }
+            )
+    return sorted(rows, key=lambda x: -x["ratio"])[:n]
+
+
+def _ratios(recs: list[dict[str, Any]]) -> list[float]:
+    return [x["ratio"] for x in _slowest(recs, n=10**9)]
+
+
+def _conclusion(run: Run) -> dict[str, Any]:
+    ok = [r for r in run.recs if r.get("status") == "ok"]
+    fs = [f for r in ok for f in findings(r)]
+    ratios = _ratios(run.recs)
+    strict = sum(agreed_counts(r)[0] for r in ok)
+    loose = sum(agreed_counts(r)[1] for r in ok)
+    return {
+        "pairs": len(run.recs),
+        "ok": len(ok),
+        "failed": len(run.recs) - len(ok),
+        "families": sorted({str(r.get("family")) for r in run.recs}),
+        "agreed": strict,
+        "loose": loose,
+        "pairs_all_agree": sum(1 for r in ok if not r.get("disagreements")),
+        "findings": len(fs),
+        "rows": sum(f.count for f in fs),
+        "won": {s: sum(1 for f in fs if f.side == s) for s in ("occt", "relief_cad", "both")},
+        "occt_kinds": tally(ok, "occt"),
+        "relief_kinds": tally(ok, "relief_cad"),
+        "both_kinds": tally(ok, "both"),
+        "ratio_median": statistics.median(ratios) if ratios else math.nan,
+        "ratio_worst": max(ratios) if ratios else math.nan,
+        "ratio_best": min(ratios) if ratios else math.nan,
+    }
+
+
+def _table_rows(summary: dict[str, Any], key: str) -> list[dict[str, Any]]:
     rows = list(summary.get(key, {}).items())
     if key == "by_family":
         rows.append(("TOTAL", summary.get("total", {})))
-    head = f"<th class='l'>{title}</th>" + "".join(f"<th>{html.escape(c)}</th>" for _, c in _COLS)
-    head += "<th>µs/pair relief_cad</th><th>µs/pair OCCT</th><th>OCCT/relief time</th>"
-    body = []
+    out = []
     for name, v in rows:
         ok = max(v.get("ok", 0), 1)
         tr, to = 1e6 * v.get("relief_cad_s", 0) / ok, 1e6 * v.get("occt_s", 0) / ok
-        ratio = f"{to / tr:.2f}" if tr > 0 else "-"
-        cells = "".join(f"<td>{int(v.get(k, 0))}</td>" for k, _ in _COLS)
-        body.append(
-            f"<tr><td class='l'>{html.escape(str(name))}</td>{cells}<td>{tr:.0f}</td><td>{to:.0f}</td>"
-            f"<td>{ratio}</td></tr>"
+        out.append(
+            {
+                "name": name,
+                "cells": [int(v.get(k, 0)) for k, _ in _COLS],
+                "relief": tr,
+                "occt": to,
+                "ratio": speed_ratio(tr, to),
+            }
         )
-    return f"<table><thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>"
+    return out
 
 
-def _result_obj(d: dict[str, Any]) -> Any:
-    from relief_cad.cad.results import EdgeIntersection, EdgeOverlap
-
-    if d.get("type") == "overlap":
-        return EdgeOverlap(
-            d["index_a"],
-            d["index_b"],
-            None,
-            None,
-            tuple(d["t"]),
-            tuple(d["u"]),
-            None,
-            route=d.get("route", ""),
-        )
-    return EdgeIntersection(
-        d["index_a"],
-        d["index_b"],
-        None,
-        None,
-        d["t"],
-        d["u"],
-        tuple(d["point"]),
-        d.get("kind", "crossing"),
-        d.get("distance", 0.0),
-        route=d.get("route", ""),
+def _occt_answer(r: dict[str, Any], tol: float) -> tuple[Any, ...]:
+    pts = sorted(
+        tuple(round(c / max(tol, 1e-12)) for c in x.get("point", ()))
+        for x in r.get("occt", [])
+        if "point" in x
     )
+    return (len(r.get("occt", [])), tuple(pts))
 
 
-def _where(d: dict[str, Any]) -> str:
-    if d.get("type") == "overlap":
-        return f"edges {d['index_a']}/{d['index_b']} t∈[{d['t'][0]:.6g}, {d['t'][1]:.6g}]"
-    return f"edges {d['index_a']}/{d['index_b']} t={d['t']:.10g} u={d['u']:.10g}"
+def _versions_side_by_side(runs: list[Run]) -> list[dict[str, Any]]:
+    """Per family: where the runs' OCCT answers differ from each other, and which run the arbiter backs."""
+    by_id = [{r["id"]: r for r in run.recs if r.get("status") == "ok"} for run in runs]
+    common = set(by_id[0]).intersection(*by_id[1:])
+    fams: dict[str, dict[str, Any]] = {}
+    for i in sorted(common):
+        recs = [m[i] for m in by_id]
+        tol = float(recs[0].get("tol") or 1e-7)
+        f = fams.setdefault(
+            str(recs[0].get("family")),
+            {"pairs": 0, "differ": 0, "right": [0] * len(runs), "faults": [0] * len(runs)},
+        )
+        f["pairs"] += 1
+        wrong = [sum(1 for x in findings(r) if x.side in ("occt", "both")) for r in recs]
+        f["faults"] = [a + b for a, b in zip(f["faults"], wrong, strict=True)]
+        if len({_occt_answer(r, 10 * tol) for r in recs}) > 1:
+            f["differ"] += 1
+            f["right"] = [a + (w == 0) for a, w in zip(f["right"], wrong, strict=True)]
+    return [{"family": k, **v} for k, v in sorted(fams.items())]
 
 
-def _picture(item: Item | None, rec: dict[str, Any]) -> bytes:
+def _cards(run: Run, items: dict[str, Item], max_pictures: int) -> list[dict[str, Any]]:
+    cards: list[dict[str, Any]] = []
+    for r in [x for x in run.recs if x.get("status") == "ok" and x.get("disagreements")]:
+        pic = _picture(items.get(r["id"]), r) if len(cards) < max_pictures else None
+        cards.append({"rec": r, "findings": findings(r), "pic": pic, "b64": _b64(pic), "run": run.label})
+    return cards
+
+
+def _spot(claim: dict[str, Any], edges_a: list[Any]) -> Any:
+    if "point" in claim:
+        return claim["point"]
+    from .plots import edge_points
+
+    t0, t1 = claim["t"]
+    return edge_points(edges_a[claim["index_a"]], t0, t1, n=3)[1]
+
+
+def _picture(item: Item | None, rec: dict[str, Any]) -> Picture | None:
     if item is None:
-        return b""
-    from relief_cad.cad.compare import plot_pair_png
+        return None
     from relief_cad.cad.occt import unique_edges
 
     try:
         a, b = item.shapes()
         ea = unique_edges(a)
-        eb = ea if b is None else unique_edges(b)
-        relief = [_result_obj(x) for x in rec.get("relief", [])]
-        occt = [_result_obj(x) for x in rec.get("occt", [])]
-        hl = [_result_obj(x["claim"]) for x in rec.get("disagreements", [])]
-        return plot_pair_png(
-            ea, eb if b is not None else [], relief, occt, hl, size=(4.0, 3.2), title=item.id
-        )
-    except Exception:  # noqa: BLE001 - a picture is never worth failing the report
-        return b""
+        eb = [] if b is None else unique_edges(b)
+        spots = [_spot(d["claim"], ea) for d in rec.get("disagreements", [])]
+        return pair_png(ea, eb, rec, spots, title=f"{item.id} ({item.family})")
+    except Exception:  # noqa: BLE001 - a picture is never worth failing the report; the card says so
+        return None
+
+
+def _items(corpus: Any, need: set[str]) -> dict[str, Item]:
+    if not corpus or not need or not Path(corpus).is_file():
+        return {}
+    return {it.id: it for it in read_corpus(corpus) if isinstance(it, Item) and it.id in need}
+
+
+def _histograms(run: Run) -> tuple[Picture, Picture]:
+    err: dict[str, list[float]] = {"relief_cad": [], "OCCT": []}
+    for r in run.recs:
+        for m in r.get("agreed", []) if r.get("status") == "ok" else []:
+            for key, name in (("relief_error", "relief_cad"), ("occt_error", "OCCT")):
+                if m.get(key) is not None:
+                    err[name].append(math.log10(max(float(m[key]), 1e-20)))
+    h1 = hist_png(
+        err,
+        "log10(distance to the arbiter's true point) [model units], floored at 1e-20",
+        "Error of matched points against the 50-digit arbiter",
+    )
+    logs = {"pairs": [math.log10(x) for x in _ratios(run.recs)]}
+    h2 = hist_png(
+        logs,
+        "log10(relief_cad time / OCCT time) per pair: below 0 = relief_cad faster",
+        "Speed ratio relief/OCCT per pair",
+        mark_zero="equal speed",
+    )
+    return h1, h2
 
 
 def write_report(
-    results: str | Path,
+    results: str | Path | Sequence[str | Path],
     out: str | Path,
     *,
     corpus: str | Path | None = None,
     max_pictures: int = 200,
 ) -> Path:
-    """Write ``report.html`` for a results file (or a compare output folder) into ``out``.
+    """Write ``report.html`` for one or several results files (or compare folders) into ``out``.
 
     Parameters
     ----------
-    results : path
-        ``results.jsonl`` or the folder holding it (and ``summary.json``).
+    results : path or list of paths
+        ``results.jsonl`` files or the folders holding them; several runs (one per OCCT
+        version, same corpus) get side-by-side columns. The first is the main run.
     out : path
         Output folder; the report is ``<out>/report.html``.
     corpus : path, optional
-        The corpus the results came from (for the pictures); default: the one named in
-        ``summary.json``.
+        The corpus the results came from (for the pictures); default: as recorded by compare.
     max_pictures : int
-        At most this many disagreement pictures (the rest are listed without one).
+        At most this many disagreement pictures per run (the rest are listed without one).
 
     Returns
     -------
     Path
         The report file.
+
+    Raises
+    ------
+    ReportInputError
+        A results path is missing, a folder holds no results.jsonl, or a file has no records.
     """
-    rp = Path(results)
-    if rp.is_dir():
-        rp = rp / "results.jsonl"
-    recs = load_results(rp)
-    summary = summarize(recs)
-    if corpus is None:
-        sj = rp.parent / "summary.json"
-        if sj.exists():
-            corpus = json.loads(sj.read_text()).get("corpus")
-    dis_recs = [r for r in recs if r.get("status") == "ok" and r.get("disagreements")]
-    need = {r["id"] for r in dis_recs[:max_pictures]}
-    items: dict[str, Item] = {}
-    if corpus and need and Path(corpus).exists():
-        for it in read_corpus(corpus):
-            if isinstance(it, Item) and it.id in need:
-                items[it.id] = it
+    import jinja2
 
-    # histograms
-    err_rel: list[float] = []
-    err_occ: list[float] = []
-    ratios: list[float] = []
-    for r in recs:
-        if r.get("status") != "ok":
-            continue
-        for m in r.get("agreed", []):
-            for key, dest in (("relief_error", err_rel), ("occt_error", err_occ)):
-                e = m.get(key)
-                if e is not None:
-                    dest.append(math.log10(max(float(e), 1e-20)))
-        t = r.get("times", {})
-        if t.get("relief_cad", 0) > 0 and t.get("occt", 0) > 0 and "relief_cad" not in r.get("errors", {}):
-            ratios.append(math.log10(t["occt"] / t["relief_cad"]))
-    hist_err = _hist_png(
-        {"relief_cad": err_rel, "OCCT": err_occ},
-        "log10(distance to the true point) [model units]",
-        "Error of agreed points vs the 50-digit arbiter (floored at 1e-20)",
+    runs = [load_run(p) for p in ([results] if isinstance(results, (str, Path)) else results)]
+    corpus = corpus or runs[0].header.get("corpus")
+    need = {r["id"] for run in runs for r in run.recs if r.get("disagreements")}
+    items = _items(corpus, need)
+    h_err, h_time = _histograms(runs[0])
+    env = jinja2.Environment(
+        loader=jinja2.FileSystemLoader(Path(__file__).parent / "templates"),
+        autoescape=True,
+        undefined=jinja2.StrictUndefined,
     )
-    hist_time = _hist_png(
-        {"pairs": ratios},
-        "log10(OCCT time / relief_cad time) per pair",
-        "Timing ratio (> 0: relief_cad faster)",
+    env.filters["b64"] = _b64
+    html = env.get_template("report.html.j2").render(
+        runs=runs,
+        main=runs[0],
+        corpus=corpus,
+        cols=[c for _, c in _COLS],
+        kinds=KINDS,
+        conclusion=_conclusion(runs[0]),
+        conclusions=[_conclusion(r) for r in runs],
+        families=_table_rows(runs[0].summary, "by_family"),
+        routes=_table_rows(runs[0].summary, "by_route"),
+        side_by_side=_versions_side_by_side(runs) if len(runs) > 1 else [],
+        slowest=_slowest(runs[0].recs),
+        h_err=h_err,
+        h_time=h_time,
+        ratio_note=RATIO_NOTE,
+        cards=[c for run in runs for c in _cards(run, items, max_pictures)],
+        glossary=GLOSSARY,
+        generated=f"{_dt.datetime.now(_dt.timezone.utc):%Y-%m-%d %H:%M UTC}",
     )
-
-    tot = summary["total"]
-    parts = [
-        "<!DOCTYPE html><html><head><meta charset='utf-8'><title>relief_cad vs OCCT report</title>",
-        f"<style>{_CSS}</style></head><body>",
-        "<h1>relief_cad vs OCCT: comparison report</h1>",
-        f"<p class='small'>generated {_dt.datetime.now(_dt.timezone.utc):%Y-%m-%d %H:%M UTC} from "
-        f"{html.escape(str(rp))}; corpus {html.escape(str(corpus))}</p>",
-        f"<p id='headline'><b>{int(tot.get('pairs', 0))}</b> items, "
-        f"<b>{int(tot.get('errors', 0))}</b> failed; "
-        f"<b>{int(tot.get('agreed', 0))}</b> results agreed; disagreements decided for relief_cad: "
-        f"<b>{int(tot.get('relief_cad_right', 0))}</b>, for OCCT: <b>{int(tot.get('occt_right', 0))}</b>, "
-        f"neither: <b>{int(tot.get('neither', 0))}</b>.</p>",
-        "<h2>Summary by family</h2>",
-        _table(summary, "by_family", "family"),
-        "<h2>Summary by OCCT route</h2>",
-        _table(summary, "by_route", "OCCT route"),
-        "<p class='small'>relief✓ / occt✓: disagreements the arbiter decided for that side; "
-        "~: agreed points reported farther than tol from the arbiter's true point; pairs≠: items with "
-        "at least one disagreement.</p>",
-        "<h2>Errors against the truth</h2>",
-        _img(hist_err, "error histogram"),
-        "<h2>Timing</h2>",
-        _img(hist_time, "timing ratio histogram"),
-        "<p class='small'>Wall time of one call per item in a worker process, after a warm-up that loads "
-        "relief_cad's compiled kernels; relief_cad's time includes converting the edges to Bézier segments, "
-        "OCCT's includes choosing the route (plane test, mapping to 2D). For steady-state speed use "
-        "<code>python -m workbench bench</code>.</p>",
-    ]
-    if summary["errors"]:
-        parts.append(
-            f"<h2>Failed items ({len(summary['errors'])})</h2><table><thead><tr><th class='l'>id</th>"
-            "<th class='l'>stage</th><th class='l'>reason</th></tr></thead><tbody>"
-        )
-        for e in summary["errors"]:
-            parts.append(
-                f"<tr><td class='l'>{html.escape(str(e['id']))}</td><td class='l'>"
-                f"{html.escape(str(e['stage']))}</td><td class='l'>{html.escape(str(e['reason']))}</td></tr>"
-            )
-        parts.append("</tbody></table>")
-    side_fail = [r for r in recs if r.get("status") == "ok" and r.get("errors")]
-    if side_fail:
-        parts.append(
-            f"<h2>Items where one side raised ({len(side_fail)})</h2><table><thead><tr>"
-            "<th class='l'>id</th><th class='l'>side</th><th class='l'>error</th></tr></thead><tbody>"
-        )
-        for r in side_fail:
-            for side, msg in r["errors"].items():
-                parts.append(
-                    f"<tr><td class='l'>{html.escape(r['id'])}</td><td class='l'>{side}</td>"
-                    f"<td class='l'>{html.escape(msg)}</td></tr>"
-                )
-        parts.append("</tbody></table>")
-    parts.append(f"<h2 id='disagreements'>Disagreements ({len(dis_recs)} items)</h2>")
-    if not dis_recs:
-        parts.append("<p>None: relief_cad and OCCT agree on every item.</p>")
-    for k, r in enumerate(dis_recs):
-        pic = _picture(items.get(r["id"]), r) if k < max_pictures else b""
-        rows = []
-        for d in r["disagreements"]:
-            rows.append(
-                f"<tr><td class='l'>{html.escape(d.get('status', 'only ' + d['claimant']))}</td>"
-                f"<td class='l'>{html.escape(_where(d['claim']))}"
-                f"</td><td class='l'>{html.escape(d['claim'].get('kind', ''))}</td>"
-                f"<td class='l win-{html.escape(d['winner'])}'>{html.escape(d['winner'])}</td>"
-                f"<td class='l'>{html.escape(d['reason'])}</td></tr>"
-            )
-        parts.append(
-            f"<div class='card'>{_img(pic, 'pair ' + r['id'])}<div class='txt'><b>{html.escape(r['id'])}</b> "
-            f"({html.escape(r.get('family', ''))}; OCCT route {html.escape(', '.join(r.get('routes', [])))}; "
-            f"tol {r.get('tol', 0):.3g})<table><thead><tr><th class='l'>claim</th><th class='l'>where</th>"
-            f"<th class='l'>kind</th><th class='l'>right</th><th class='l'>why</th></tr></thead>"
-            f"<tbody>{''.join(rows)}</tbody></table></div></div>"
-        )
-    # rendering check for headless browsers: count the images that decoded
-    parts.append(
-        "<script>window.addEventListener('load',function(){var n=0;for(var i of document.images)"
-        "{if(i.complete&&i.naturalWidth>0)n++;}document.body.setAttribute('data-images-ok',n);"
-        "document.body.setAttribute('data-images',document.images.length);});</script>"
-    )
-    parts.append("</body></html>")
     outdir = Path(out)
     outdir.mkdir(parents=True, exist_ok=True)
     path = outdir / "report.html"
-    path.write_text("\n".join(parts), encoding="utf-8")
+    path.write_text(html, encoding="utf-8")
     return path

@@ -11,20 +11,42 @@ with ``"status": "error"`` and the reason; the run goes on.
 
 from __future__ import annotations
 
+import importlib
 import json
-import math
+import multiprocessing as mp
 import os
+import signal
 import sys
 import time
 import traceback
 from collections import defaultdict
 from collections.abc import Iterable, Iterator
+from concurrent.futures import FIRST_COMPLETED, Executor, Future, ProcessPoolExecutor, wait
 from pathlib import Path
 from typing import Any, TextIO
 
-from .corpus import CorpusError, Item, read_corpus
+from tqdm import tqdm  # type: ignore[import-untyped]
 
-__all__ = ["evaluate", "run_compare", "summarize", "format_summary", "load_results", "Progress"]
+from relief_cad.errors import ReliefCadError
+
+from .corpus import CorpusError, CorpusInfo, Item, check_corpus, read_corpus
+from .versions import tool_versions
+
+__all__ = [
+    "evaluate",
+    "run_compare",
+    "summarize",
+    "format_summary",
+    "load_results",
+    "read_header",
+    "open_results",
+    "ResultsMismatchError",
+    "InlineExecutor",
+    "HEADER_KEY",
+    "agreed_counts",
+    "speed_ratio",
+    "RATIO_NOTE",
+]
 
 
 # --------------------------------------------------------------------------- one item
@@ -103,61 +125,36 @@ def _evaluate_batch(items: list[Item | CorpusError]) -> list[dict[str, Any]]:
     return [evaluate(i) for i in items]
 
 
-# --------------------------------------------------------------------------- progress
+# --------------------------------------------------------------------------- results file
+
+HEADER_KEY = "relief_cad_results"
+"""Key of the first line of a results file: ``{"relief_cad_results": {corpus, sha256, versions}}``."""
 
 
-class Progress:
-    """A one-line progress bar with rate and ETA on stderr."""
-
-    def __init__(self, total: int, done: int = 0, stream: TextIO | None = None, enabled: bool = True) -> None:
-        self.total, self.done, self.start_done = total, done, done
-        self.stream = stream or sys.stderr
-        self.enabled = enabled
-        self.t0 = time.perf_counter()
-        self.last = 0.0
-
-    def update(self, n: int = 1, force: bool = False) -> None:
-        self.done += n
-        now = time.perf_counter()
-        if not self.enabled or (not force and now - self.last < 0.2 and self.done < self.total):
-            return
-        self.last = now
-        elapsed = max(now - self.t0, 1e-9)
-        rate = (self.done - self.start_done) / elapsed
-        left = max(self.total - self.done, 0)
-        eta = left / rate if rate > 0 else math.inf
-        frac = self.done / self.total if self.total else 1.0
-        width = 30
-        bar = "#" * int(frac * width) + "-" * (width - int(frac * width))
-        eta_s = time.strftime("%H:%M:%S", time.gmtime(eta)) if math.isfinite(eta) else "--:--:--"
-        self.stream.write(
-            f"\rcompare [{bar}] {self.done}/{self.total} {100 * frac:5.1f}% {rate:7.1f} pairs/s ETA {eta_s}"
-        )
-        if self.done >= self.total:
-            self.stream.write("\n")
-        self.stream.flush()
-
-
-# --------------------------------------------------------------------------- resume
+class ResultsMismatchError(ReliefCadError, ValueError):
+    """A results file that belongs to another corpus or to other tool versions."""
 
 
 def load_results(path: str | os.PathLike[str], *, repair: bool = False) -> list[dict[str, Any]]:
-    """Read a results file; with ``repair``, drop a half-written tail line from the file itself."""
+    """Read a results file's records (not its header); ``repair`` drops a half-written tail line."""
     p = Path(path)
     if not p.exists():
         return []
     out: list[dict[str, Any]] = []
     good_bytes = 0
-    with open(p, "rb") as f:
-        data = f.read()
+    data = p.read_bytes()
     pos = 0
     for raw in data.splitlines(keepends=True):
         try:
             if not raw.endswith(b"\n"):
                 raise ValueError("unterminated")
-            out.append(json.loads(raw))
+            rec = json.loads(raw)
+            if not isinstance(rec, dict):
+                raise ValueError("not an object")
+            if HEADER_KEY not in rec:
+                out.append(rec)
             good_bytes = pos + len(raw)
-        except ValueError:
+        except ValueError:  # also UnicodeDecodeError: a garbage line
             if repair:
                 break
         pos += len(raw)
@@ -167,11 +164,137 @@ def load_results(path: str | os.PathLike[str], *, repair: bool = False) -> list[
     return out
 
 
-def _count(corpus: str | os.PathLike[str]) -> int:
+def read_header(path: str | os.PathLike[str]) -> dict[str, Any] | None:
+    """The header of a results file (``None`` when it has none, e.g. an older workbench's file)."""
+    p = Path(path)
+    if not p.is_file():
+        return None
+    with open(p, "rb") as f:
+        first = f.readline()
     try:
-        return sum(1 for _ in read_corpus(corpus))
-    except CorpusError:
-        return 0
+        head = json.loads(first)
+    except ValueError:
+        return None
+    return head.get(HEADER_KEY) if isinstance(head, dict) else None
+
+
+def _header(info: CorpusInfo, versions: dict[str, str]) -> dict[str, Any]:
+    return {"corpus": str(info.path), "sha256": info.sha256, "items": info.n_items, "versions": versions}
+
+
+def _mismatch(path: Path, head: dict[str, Any] | None, info: CorpusInfo, versions: dict[str, str]) -> str:
+    if head is None:
+        return f"{path} has no header saying which corpus it belongs to (an older workbench wrote it)"
+    if head.get("sha256") != info.sha256:
+        return (
+            f"{path} holds results of another corpus ({head.get('corpus')}, sha256 "
+            f"{str(head.get('sha256'))[:12]}), not of {info.path} (sha256 {info.sha256[:12]})"
+        )
+    old = head.get("versions", {})
+    diff = [
+        f"{k} {old.get(k, '-')} -> {versions.get(k, '-')}"
+        for k in sorted(set(old) | set(versions))
+        if old.get(k) != versions.get(k)
+    ]
+    return f"{path} was made with other tool versions ({'; '.join(diff)})" if diff else ""
+
+
+def open_results(
+    path: Path, info: CorpusInfo, versions: dict[str, str], *, fresh: bool = False
+) -> list[dict[str, Any]]:
+    """Start, or continue, a results file for this corpus and these versions; returns its records.
+
+    Raises
+    ------
+    ResultsMismatchError
+        The file holds another corpus's results, or results of other tool versions, and
+        ``fresh`` is false.
+    """
+    if fresh:
+        path.unlink(missing_ok=True)
+        (path.parent / "summary.json").unlink(missing_ok=True)
+    if path.exists() and path.stat().st_size:
+        why = _mismatch(path, read_header(path), info, versions)
+        if why:
+            raise ResultsMismatchError(f"{why}; give another --out, or --fresh to replace them")
+        return load_results(path, repair=True)
+    path.write_text(json.dumps({HEADER_KEY: _header(info, versions)}) + "\n", encoding="utf-8")
+    return []
+
+
+# --------------------------------------------------------------------------- executors
+
+
+class InlineExecutor(Executor):
+    """An executor running each task at once in this process (``workers=1``)."""
+
+    def submit(self, fn: Any, /, *args: Any, **kwargs: Any) -> Future[Any]:  # noqa: D102
+        fut: Future[Any] = Future()
+        try:
+            fut.set_result(fn(*args, **kwargs))
+        except Exception as exc:  # noqa: BLE001 - delivered through the future
+            fut.set_exception(exc)
+        return fut
+
+
+def _ignore_sigint() -> None:
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent alone handles Ctrl-C
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)  # and terminates its workers quietly
+
+
+def _executor(workers: int | None, scheduler: Any) -> tuple[Executor, int, Any]:
+    """The executor, its in-flight window (batches) and a closer (local pool or Dask)."""
+    if scheduler is not None:
+        dist: Any = importlib.import_module("distributed")  # untyped library
+        client = scheduler if isinstance(scheduler, dist.Client) else dist.Client(scheduler)
+        own = client is not scheduler
+        window = max(4, 4 * sum(client.nthreads().values()))
+        return client.get_executor(pure=False), window, (client.close if own else (lambda: None))
+    n = workers or os.cpu_count() or 1
+    if n <= 1:
+        return InlineExecutor(), 1, lambda: None
+    ctx = mp.get_context("fork" if sys.platform.startswith("linux") else "spawn")
+    pool = ProcessPoolExecutor(n, mp_context=ctx, initializer=_ignore_sigint)
+    return pool, 4 * n, lambda: None
+
+
+def _stop(ex: Executor) -> None:
+    """Shut an executor down now: queued tasks cancelled, local workers terminated."""
+    procs = list((getattr(ex, "_processes", None) or {}).values())  # a local pool's workers
+    try:
+        ex.shutdown(wait=False, cancel_futures=True)
+    except TypeError:  # Dask's ClientExecutor.shutdown(wait) has no cancel_futures
+        ex.shutdown(wait=False)
+    for proc in procs:
+        proc.terminate()
+    for proc in procs:
+        proc.join(5)
+
+
+def _drive(ex: Executor, window: int, batches: Iterator[list[Item | CorpusError]], write: Any) -> bool:
+    """Keep ``window`` batches in flight and write results as they come; True if ``write`` stopped it."""
+    pending: set[Future[Any]] = set()
+
+    def fill() -> None:
+        while len(pending) < window:
+            b = next(batches, None)
+            if b is None:
+                return
+            pending.add(ex.submit(_evaluate_batch, b))
+
+    fill()
+    while pending:
+        done, _ = wait(pending, timeout=0.25, return_when=FIRST_COMPLETED)  # short: Ctrl-C is seen
+        for fut in done:
+            pending.discard(fut)
+            if write(fut.result()):
+                return True
+        fill()
+    return False
+
+
+def _raise_interrupt(signum: int, frame: Any) -> None:
+    raise KeyboardInterrupt
 
 
 # --------------------------------------------------------------------------- runner
@@ -187,6 +310,9 @@ def run_compare(
     progress: bool = True,
     stop_after: int | None = None,
     batch: int = 4,
+    fresh: bool = False,
+    info: CorpusInfo | None = None,
+    say: Any = None,
 ) -> dict[str, Any]:
     """Run the comparison on a corpus and return the summary (also written to ``summary.json``).
 
@@ -203,131 +329,154 @@ def run_compare(
     limit : int, optional
         Only the first ``limit`` items of the corpus.
     progress : bool
-        Show the progress bar on stderr.
+        Show the progress bar (tqdm) on stderr.
     stop_after : int, optional
         Stop after this many new results, as if interrupted (for testing resume).
     batch : int
         Items per task.
+    fresh : bool
+        Discard the results already in ``out`` instead of resuming them.
+    info : CorpusInfo, optional
+        The corpus's :func:`~workbench.corpus.check_corpus` answer, if already known.
+    say : callable, optional
+        Called with a one-line message when a run resumes (``"resuming: N of M ..."``).
+
+    Returns
+    -------
+    dict
+        :func:`summarize`'s answer plus ``complete``, ``interrupted``, ``resumed`` (items found
+        done), ``expected`` (items asked for), ``corpus`` and ``versions``.
+
+    Raises
+    ------
+    CorpusError
+        The corpus is unusable (see :func:`~workbench.corpus.check_corpus`).
+    ResultsMismatchError
+        ``out`` holds results of another corpus or other tool versions (and not ``fresh``).
     """
+    info = info or check_corpus(corpus)
+    versions = tool_versions()
     outdir = Path(out)
     outdir.mkdir(parents=True, exist_ok=True)
     results_path = outdir / "results.jsonl"
-    done_ids = {r.get("id") for r in load_results(results_path, repair=True)}
-    total = _count(corpus)
-    if limit is not None:
-        total = min(total, limit)
-
-    def todo() -> Iterator[Item | CorpusError]:
-        try:
-            for k, item in enumerate(read_corpus(corpus)):
-                if limit is not None and k >= limit:
-                    return
-                if getattr(item, "id", None) in done_ids:
-                    continue
-                yield item
-        except CorpusError as exc:
-            yield exc
-
-    def batches() -> Iterator[list[Item | CorpusError]]:
-        buf: list[Item | CorpusError] = []
-        for it in todo():
-            buf.append(it)
-            if len(buf) >= batch:
-                yield buf
-                buf = []
-        if buf:
-            yield buf
-
-    already = min(len(done_ids), total)
-    bar = Progress(total, already, enabled=progress)
-    new = 0
-    interrupted = False
-    with open(results_path, "a", encoding="utf-8") as sink:
-
-        def write(records: Iterable[dict[str, Any]]) -> bool:
-            nonlocal new
-            for rec in records:
-                sink.write(json.dumps(rec, default=float) + "\n")
-                new += 1
-                bar.update()
-            sink.flush()
-            return stop_after is not None and new >= stop_after
-
-        try:
-            if scheduler is not None:
-                interrupted = _run_dask(scheduler, batches(), write)
-            else:
-                n = workers or os.cpu_count() or 1
-                if n <= 1:
-                    for b in batches():
-                        if write(_evaluate_batch(b)):
-                            interrupted = True
-                            break
-                else:
-                    import multiprocessing as mp
-
-                    ctx = mp.get_context("fork" if sys.platform.startswith("linux") else "spawn")
-                    import threading
-
-                    # at most 4 batches per worker in flight: the pool's feeder thread would
-                    # otherwise read a corpus of millions of pairs into memory
-                    slots = threading.BoundedSemaphore(4 * n)
-
-                    def bounded() -> Iterator[list[Item | CorpusError]]:
-                        for b in batches():
-                            slots.acquire()
-                            yield b
-
-                    pool = ctx.Pool(n, maxtasksperchild=200)
-                    try:
-                        for recs in pool.imap_unordered(_evaluate_batch, bounded(), chunksize=1):
-                            slots.release()
-                            if write(recs):
-                                interrupted = True
-                                break
-                    finally:
-                        pool.terminate()
-                        pool.join()
-        except KeyboardInterrupt:
-            interrupted = True
-    bar.update(0, force=True)
+    expected = info.ids[:limit] if limit is not None else info.ids
+    done_ids = {r.get("id") for r in open_results(results_path, info, versions, fresh=fresh)}
+    already = len(done_ids & set(expected))
+    if already and say is not None:
+        say(f"resuming: {already} of {len(expected)} items already done in {results_path}")
+    stopped = interrupted = False
+    bar = tqdm(
+        total=len(expected),
+        initial=already,
+        desc="compare",
+        unit="pair",
+        disable=not progress,
+        file=sys.stderr,
+        dynamic_ncols=True,
+    )
+    old_term = signal.signal(signal.SIGTERM, _raise_interrupt) if _main_thread() else None
+    try:
+        with open(results_path, "a", encoding="utf-8") as sink:
+            write = _writer(sink, bar, stop_after)
+            ex, window, close = _executor(workers, scheduler)
+            try:
+                stopped = _drive(ex, window, _batches(corpus, set(expected), done_ids, batch), write)
+            except KeyboardInterrupt:
+                interrupted = True
+            finally:
+                _stop(ex)
+                close()
+    finally:
+        bar.close()
+        if old_term is not None:
+            signal.signal(signal.SIGTERM, old_term)
     results = load_results(results_path)
     summary = summarize(results)
-    summary["complete"] = not interrupted and len({r.get("id") for r in results}) >= total
-    summary["corpus"] = str(corpus)
+    have = {r.get("id") for r in results}
+    summary.update(
+        complete=not (stopped or interrupted) and set(expected) <= have,
+        interrupted=interrupted,
+        resumed=already,
+        expected=len(expected),
+        corpus=str(corpus),
+        versions=versions,
+    )
     (outdir / "summary.json").write_text(json.dumps(summary, indent=1, default=float))
     return summary
 
 
-def _run_dask(scheduler: Any, batches: Iterator[list[Item | CorpusError]], write: Any) -> bool:
-    import importlib
+def _main_thread() -> bool:
+    import threading
 
-    dist: Any = importlib.import_module("distributed")  # untyped library
-    client = scheduler if isinstance(scheduler, dist.Client) else dist.Client(scheduler)
-    own = client is not scheduler
-    try:
-        window = max(4, 4 * sum(client.nthreads().values()))
-        ac = dist.as_completed()
-        for _ in range(window):
-            b = next(batches, None)
-            if b is None:
-                break
-            ac.add(client.submit(_evaluate_batch, b, pure=False))
-        for fut in ac:
-            if write(fut.result()):
-                for f in ac.futures:
-                    f.cancel()
-                return True
-            b = next(batches, None)
-            if b is not None:
-                ac.add(client.submit(_evaluate_batch, b, pure=False))
-        return False
-    finally:
-        if own:
-            client.close()
+    return threading.current_thread() is threading.main_thread()
+
+
+def _writer(sink: TextIO, bar: Any, stop_after: int | None) -> Any:
+    new = 0
+
+    def write(records: Iterable[dict[str, Any]]) -> bool:
+        nonlocal new
+        for rec in records:
+            sink.write(json.dumps(rec, default=float) + "\n")
+            new += 1
+            bar.update()
+        sink.flush()
+        return stop_after is not None and new >= stop_after
+
+    return write
+
+
+def _batches(
+    corpus: str | os.PathLike[str], wanted: set[str], done: set[Any], size: int
+) -> Iterator[list[Item | CorpusError]]:
+    buf: list[Item | CorpusError] = []
+    for item in read_corpus(corpus):
+        key = getattr(item, "id", None)
+        if key not in wanted or key in done:
+            continue
+        buf.append(item)
+        if len(buf) >= size:
+            yield buf
+            buf = []
+    if buf:
+        yield buf
 
 
 # --------------------------------------------------------------------------- summary
+
+
+def agreed_counts(rec: dict[str, Any]) -> tuple[int, int]:
+    """Matches of one record: ``(agreed, loose)``.
+
+    Agreed: both answers within ``tol`` of each other and of the arbiter's true point.
+    Loose: matched only after refinement, or one side farther than ``tol`` from the truth.
+
+    >>> agreed_counts({"tol": 1e-7, "agreed": [{"loose": False, "relief_error": 0, "occt_error": 0.3}]})
+    (0, 1)
+    """
+    tol = float(rec.get("tol") or 0.0)
+    strict = loose = 0
+    for m in rec.get("agreed", []):
+        errs = [e for e in (m.get("relief_error"), m.get("occt_error")) if e is not None]
+        if m.get("loose") or any(e > tol for e in errs):
+            loose += 1
+        else:
+            strict += 1
+    return strict, loose
+
+
+def speed_ratio(relief_s: float, occt_s: float) -> float:
+    """The one speed ratio of the workbench: relief_cad time / OCCT time (below 1: relief_cad faster).
+
+    >>> speed_ratio(1.0, 4.0)
+    0.25
+    """
+    return relief_s / occt_s if occt_s > 0 else float("nan")
+
+
+RATIO_NOTE = (
+    "ratio = relief_cad time / OCCT time on the same pairs in the same run; below 1 = relief_cad faster"
+)
 
 
 def summarize(results: list[dict[str, Any]]) -> dict[str, Any]:
@@ -348,9 +497,11 @@ def summarize(results: list[dict[str, Any]]) -> dict[str, Any]:
             continue
         s = r.get("score", {})
         side_err = r.get("errors", {})
+        strict, loose = agreed_counts(r)
         for tgt in [f] + [route[x] for x in (r.get("routes") or ["(none)"])]:
             tgt["ok"] += 1
-            tgt["agreed"] += s.get("agreed", 0)
+            tgt["agreed"] += strict
+            tgt["loose"] += loose
             tgt["relief_cad_right"] += s.get("relief_cad_right", 0)
             tgt["occt_right"] += s.get("occt_right", 0)
             tgt["neither"] += s.get("neither", 0)
@@ -382,6 +533,7 @@ _COLS = (
     ("pairs", "pairs"),
     ("errors", "err"),
     ("agreed", "agreed"),
+    ("loose", "loose"),
     ("pairs_disagreeing", "pairs≠"),
     ("relief_cad_right", "relief✓"),
     ("occt_right", "occt✓"),
@@ -408,7 +560,7 @@ def format_summary(summary: dict[str, Any]) -> str:
         for name, v in rows:
             ok = max(v.get("ok", 0), 1)
             tr, to = 1e6 * v.get("relief_cad_s", 0) / ok, 1e6 * v.get("occt_s", 0) / ok
-            ratio = f"{to / tr:7.2f}" if tr > 0 else "      -"
+            ratio = f"{speed_ratio(tr, to):7.2f}" if to > 0 else "      -"
             lines.append(
                 f"{name:<22}"
                 + "".join(f"{int(v.get(k, 0)):>9d}" for k, _ in _COLS)
@@ -416,9 +568,15 @@ def format_summary(summary: dict[str, Any]) -> str:
             )
         lines.append("")
     lines.append(
-        "relief✓/occt✓: disagreements the arbiter decided for that side; "
-        "~: agreed points reported farther than tol from the true point; ratio = occt time / relief time"
+        "agreed: both within tol of each other and of the arbiter's true point; loose: matched, but only "
+        "after refinement or farther than tol; relief✓/occt✓: disagreements the arbiter decided for that "
+        "side; neither: both wrong; ~: points farther than tol from the true point"
     )
-    if summary.get("errors"):
-        lines.append(f"{len(summary['errors'])} item(s) failed; first: {summary['errors'][0]['reason']}")
+    lines.append(RATIO_NOTE)
+    errs = summary.get("errors") or []
+    if errs:
+        lines.append(f"{len(errs)} item(s) failed:")
+        lines += [f"  {e['id']}: {e['reason']}" for e in errs[:20]]
+        if len(errs) > 20:
+            lines.append(f"  ... and {len(errs) - 20} more (all in results.jsonl and the report)")
     return "\n".join(lines)

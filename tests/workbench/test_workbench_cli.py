@@ -11,18 +11,18 @@ import sys
 from pathlib import Path
 
 import pytest
-
-from workbench.corpus import Item, bundled_corpus_path, read_corpus
-from workbench.run import load_results, run_compare
+from relief_cad_workbench.corpus import Item, bundled_corpus_path, read_corpus
+from relief_cad_workbench.run import load_results, run_compare
 
 ROOT = Path(__file__).resolve().parents[2]
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 
 
 def cli(*args, check=True):
-    env = {**os.environ, "PYTHONPATH": str(ROOT)}
-    proc = subprocess.run([sys.executable, "-m", "workbench", *map(str, args)], capture_output=True, text=True,
-                          env=env, timeout=300)
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([os.environ.get("PYTHONPATH", ""), str(ROOT)])}
+    proc = subprocess.run([sys.executable, "-m", "relief_cad_workbench", *map(str, args)], capture_output=True,
+                          text=True, env=env, timeout=600)
+    assert "Traceback" not in proc.stderr, proc.stderr
     if check and proc.returncode != 0:
         raise AssertionError(f"exit {proc.returncode}\nstdout:\n{proc.stdout}\nstderr:\n{proc.stderr}")
     return proc
@@ -36,15 +36,15 @@ def corpus(tmp_path_factory):
     broken.write_text("ISO-10303-21;\nHEADER;\nthis is not STEP")
     path = d / "small.jsonl"
     proc = cli("corpus", path, "--families", "cubic,tangent,overlap,step", "--count", "2", "--seed", "3",
-               "--step", ROOT / "workbench" / "data" / "step", "--step", broken)
-    assert "broken STEP file" in proc.stderr and "wrote 8 items" in proc.stdout
+               "--step", ROOT / "workbench" / "data" / "step", "--step", broken, check=False)
+    assert proc.returncode == 1  # a skipped input: not everything asked for was done
+    assert "OCCT cannot read this STEP file" in proc.stderr and "wrote 8 items" in proc.stdout
     items = [i for i in read_corpus(path) if isinstance(i, Item)]
     assert [i.family for i in items].count("step") == 2
     # bad input: a corrupt line, and an item whose shape has no edges
     from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeVertex
     from OCP.gp import gp_Pnt
-
-    from workbench.corpus import brep_text
+    from relief_cad_workbench.corpus import brep_text
 
     vertex = brep_text(BRepBuilderAPI_MakeVertex(gp_Pnt(0, 0, 0)).Vertex())
     with open(path, "a") as f:
@@ -55,17 +55,19 @@ def corpus(tmp_path_factory):
 
 def test_compare_resume_and_report_end_to_end(corpus, tmp_path):
     out = tmp_path / "run"
-    # an interrupted run: stops after 3 results (exit status 3: incomplete)
-    proc = cli("compare", corpus, "--out", out, "--workers", "1", "--stop-after", "3", check=False)
-    assert proc.returncode == 3 and "INTERRUPTED" in proc.stdout
+    # a run stopped early: after 3 results (exit status 3: incomplete), with 2 workers it still exits
+    proc = cli("compare", corpus, "--out", out, "--workers", "2", "--stop-after", "3", check=False)
+    assert proc.returncode == 3 and "STOPPED before the end" in proc.stdout
     first = load_results(out / "results.jsonl")
     assert len(first) >= 3
     # a crash in the middle of a line: the half line is dropped on resume
     with open(out / "results.jsonl", "a") as f:
         f.write('{"id": "half-writ')
-    proc = cli("compare", corpus, "--out", out, "--workers", "2")
-    assert "compare [" in proc.stderr and "pairs/s" in proc.stderr and "ETA" in proc.stderr
-    assert "complete:" in proc.stdout and "TOTAL" in proc.stdout
+    proc = cli("compare", corpus, "--out", out, "--workers", "2", check=False)
+    assert f"resuming: {len(first)} of 10 items already done" in proc.stderr
+    assert "compare:" in proc.stderr and "pair/s" in proc.stderr  # tqdm's bar
+    assert proc.returncode == 1 and "complete, 2 failure(s) listed above" in proc.stdout and "TOTAL" in proc.stdout
+    assert "no-edges:" in proc.stdout and "corrupt corpus line" in proc.stdout  # the failures, listed
     recs = load_results(out / "results.jsonl")
     ids = [r["id"] for r in recs]
     assert len(ids) == len(set(ids)) == 10  # 8 items + corrupt line + no-edge item, each once
@@ -84,6 +86,8 @@ def test_compare_resume_and_report_end_to_end(corpus, tmp_path):
     assert report.exists() and "report written to" in proc.stdout
     text = report.read_text()
     assert "Summary by family" in text and "Summary by OCCT route" in text
+    assert text.index('id="conclusion"') < text.index("Summary by family")  # the conclusion comes first
+    assert 'id="glossary"' in text and "below 1 = relief_cad faster" in text and "Slowest pairs" in text
     assert text.count("data:image/png;base64,") >= 2
     assert "no-edges" in text and "corrupt corpus line" in text
     assert "http://" not in text and "https://" not in text  # self-contained, offline
@@ -103,6 +107,11 @@ def test_compare_resume_and_report_end_to_end(corpus, tmp_path):
     n_ok = int(re.search(r'data-images-ok="(\d+)"', body.group(1)).group(1))
     assert n_img >= 2 and n_ok == n_img  # every inline picture decoded and rendered
     assert dom.count("<table") >= 3 and "cubic" in dom
+    imgs = re.findall(r"<img [^>]*>", dom)
+    assert imgs and all('data-legend="1"' in i for i in imgs)  # every plot has its legend
+    for i in (i for i in imgs if "pair" in i.split('class="')[1].split('"')[0]):
+        insets, spots = (int(re.search(rf'data-{k}="(\d+)"', i).group(1)) for k in ("insets", "spots"))
+        assert insets >= 1 and insets == min(spots, 4)  # a zoom inset on each disputed spot (up to 4)
     shot = tmp_path / "shot.png"
     subprocess.run(
         [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
@@ -138,9 +147,9 @@ def test_bundled_corpus_is_small_and_readable():
 
 
 def test_bench_reports_a_missing_module(tmp_path, monkeypatch):
-    from workbench import bench
+    from relief_cad_workbench import bench
 
-    monkeypatch.setitem(bench.BENCHMARKS, "nothing", "workbench.bench_does_not_exist")
+    monkeypatch.setitem(bench.BENCHMARKS, "nothing", "relief_cad_workbench.bench_does_not_exist")
     res = bench.run_bench(["nothing"], tmp_path / "b.json")
     assert res["nothing"]["status"] == "missing" and "bench_does_not_exist" in res["nothing"]["reason"]
     assert json.loads((tmp_path / "b.json").read_text())["nothing"]["status"] == "missing"

@@ -1,0 +1,83 @@
+"""Ctrl-C stops compare promptly and leaves it resumable; a killed run resumes with nothing lost or doubled."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+from relief_cad_workbench.__main__ import EXIT_INTERRUPTED, EXIT_OK
+from relief_cad_workbench.corpus import Item, random_family, read_corpus, write_corpus
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def start(corpus: Path, out: Path) -> subprocess.Popen[str]:
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([os.environ.get("PYTHONPATH", ""), str(ROOT)])}
+    return subprocess.Popen(
+        [sys.executable, "-m", "relief_cad_workbench", "compare", corpus, "--out", out, "--workers", "2", "--quiet"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, start_new_session=True,
+    )
+
+
+def records(out: Path) -> list[str]:
+    path = out / "results.jsonl"
+    if not path.exists():
+        return []
+    lines = path.read_bytes().split(b"\n")[1:]  # the header first
+    ids = []
+    for line in lines:
+        try:
+            ids.append(json.loads(line)["id"])
+        except ValueError:  # a half-written last line
+            pass
+    return ids
+
+
+def wait_for(out: Path, n: int, proc: subprocess.Popen[str], budget: float = 240.0) -> None:
+    t0 = time.monotonic()
+    while len(records(out)) < n:
+        assert proc.poll() is None, proc.communicate()
+        assert time.monotonic() - t0 < budget, f"fewer than {n} results after {budget} s"
+        time.sleep(0.2)
+
+
+@pytest.fixture(scope="module")
+def corpus(tmp_path_factory) -> Path:
+    path = tmp_path_factory.mktemp("sigint") / "c90.jsonl"
+    assert write_corpus(path, random_family("cubic", 90, seed=21)) == 90
+    return path
+
+
+def test_one_sigint_stops_compare_within_10_s_and_it_resumes(corpus, tmp_path):
+    out = tmp_path / "run"
+    ids = [i.id for i in read_corpus(corpus) if isinstance(i, Item)]
+    # 1. killed outright (SIGKILL to the whole process group) part-way through
+    proc = start(corpus, out)
+    wait_for(out, 4, proc)
+    os.killpg(proc.pid, signal.SIGKILL)
+    proc.communicate(timeout=30)
+    killed = set(records(out))
+    # 2. resumed, then a single Ctrl-C (SIGINT to the whole group, as a terminal sends it)
+    proc = start(corpus, out)
+    wait_for(out, len(killed) + 4, proc)
+    os.killpg(proc.pid, signal.SIGINT)
+    t0 = time.monotonic()
+    stdout, stderr = proc.communicate(timeout=60)
+    assert time.monotonic() - t0 < 10.0, "compare took more than 10 s to stop on Ctrl-C"
+    assert proc.returncode == EXIT_INTERRUPTED and "run the same command again to resume" in stdout
+    assert "Traceback" not in stderr, stderr
+    interrupted = records(out)
+    assert killed <= set(interrupted) and len(interrupted) < len(ids)
+    # 3. resumed to the end: every id exactly once, nothing computed before was lost
+    proc = start(corpus, out)
+    stdout, stderr = proc.communicate(timeout=600)
+    assert proc.returncode == EXIT_OK, stdout + stderr
+    assert f"resuming: {len(set(interrupted))} of 90" in stderr
+    final = records(out)
+    assert sorted(final) == sorted(ids) and len(final) == len(set(final)) == 90
