@@ -20,14 +20,36 @@ from __future__ import annotations
 
 import math
 import numbers
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
-from .curves import RationalBezier
-from .errors import InputTypeError, InvalidInputError, ToleranceError, ToleranceTypeError
+import numpy as np
+
+from ._types import FloatArray
+from .errors import (
+    DegreeError,
+    InputTypeError,
+    InvalidInputError,
+    NonFiniteError,
+    SpanError,
+    ToleranceError,
+    ToleranceTypeError,
+    WeightError,
+)
+
+if TYPE_CHECKING:
+    from .curves import RationalBezier
 
 __all__ = [
     "DEFAULT_BUDGET",
+    "MAX_DEGREE",
+    "MAX_WEIGHT_RATIO",
     "OnBudget",
+    "as_real_array",
+    "check_degree",
+    "check_finite",
+    "check_param",
+    "check_span",
+    "check_weights",
     "check_budget",
     "check_curve",
     "check_on_budget",
@@ -45,6 +67,22 @@ MAX_BUDGET: int = 2**62
 
 OnBudget = Literal["raise", "return"]
 
+MAX_DEGREE: int = 256
+"""Largest supported curve degree (constructors, :meth:`~relief_cad.RationalBezier.elevate`,
+hodographs). Beyond it evaluation is O(n^2) per point and clipping a pair O(n^3) per step, and the
+Bernstein coefficients of binary64 lose all digits (C(n, n/2) > 1e75 at n = 256); measured figures
+are in ``workbench/bench_degree.py``. A higher degree raises :class:`~relief_cad.errors.DegreeError`.
+"""
+
+MAX_WEIGHT_RATIO: float = 1e15
+"""Largest accepted ratio max(w) / min(w) of a curve's weights (dimensionless).
+
+A weight ratio ``r`` moves the curve across a parameter interval of about ``1 / r``; beyond
+``1 / PARAMETER_TOLERANCE`` = 1e15 such a feature is below the parameter resolution, so no answer
+could honestly be called complete. Scaling all weights by one factor changes nothing, so only the
+ratio counts; larger ratios raise :class:`~relief_cad.errors.WeightError`.
+"""
+
 
 def _is_real(value: Any) -> bool:
     """True for ints and floats (Python or numpy), False for bool, str, complex, arrays, None."""
@@ -59,6 +97,8 @@ def check_curve(c: Any, name: str) -> RationalBezier:
     ...
     relief_cad.errors.InputTypeError: a should be a RationalBezier, not str
     """
+    from .curves import RationalBezier  # curves imports this module: the class is looked up late
+
     if not isinstance(c, RationalBezier):
         raise InputTypeError(f"{name} should be a RationalBezier, not {type(c).__name__}")
     return c
@@ -129,3 +169,146 @@ def check_on_budget(on_budget: Any) -> OnBudget:
     if isinstance(on_budget, str) and on_budget in ("raise", "return"):
         return "raise" if on_budget == "raise" else "return"
     raise InvalidInputError(f"on_budget should be 'raise' or 'return', not {on_budget!r}")
+
+
+def _array_kind_error(arr: np.ndarray[Any, Any], name: str) -> InputTypeError | None:
+    """The error for an array of strings, complex numbers, booleans or other objects, else None."""
+    kind = arr.dtype.kind
+    if kind in "iuf":
+        return None
+    if kind == "O":
+        bad = [x for x in arr.ravel().tolist() if not _is_real(x)]
+        if not bad:
+            return None
+        what = type(bad[0]).__name__
+    else:
+        what = {"U": "str", "S": "bytes", "c": "complex", "b": "bool"}.get(kind, str(arr.dtype))
+    return InputTypeError(f"{name} should be an array of real numbers, not of {what}")
+
+
+def as_real_array(value: Any, name: str) -> FloatArray:
+    """Return ``value`` as a new C-ordered float64 array; refuse strings, complex numbers, booleans.
+
+    Raises
+    ------
+    InputTypeError
+        For a curve, a ragged list, strings (even numeric ones), complex or boolean entries.
+    NonFiniteError
+        For integers too large for a float (such as ``10**400``).
+
+    Examples
+    --------
+    >>> as_real_array([[1, 2.5]], "p").tolist()
+    [[1.0, 2.5]]
+    >>> as_real_array(["1", "2"], "p")
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InputTypeError: p should be an array of real numbers, not of str
+    >>> as_real_array([1j, 2], "p")
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InputTypeError: p should be an array of real numbers, not of complex
+    """
+    from .curves import RationalBezier
+
+    if isinstance(value, RationalBezier):
+        raise InputTypeError(f"{name} should be an array of numbers, not a {type(value).__name__}")
+    try:
+        raw = np.asarray(value)
+    except (TypeError, ValueError) as exc:
+        raise InputTypeError(f"{name} should be an array of real numbers, not a ragged or "
+                             f"non-numeric {type(value).__name__}") from exc
+    err = _array_kind_error(raw, name)
+    if err is not None:
+        raise err
+    try:
+        return np.array(raw, dtype=np.float64, order="C")
+    except OverflowError as exc:
+        raise NonFiniteError(f"{name} should be finite numbers; an integer is too large "
+                             "for a float") from exc
+
+
+def check_finite(arr: FloatArray, name: str) -> None:
+    """Raise :class:`~relief_cad.errors.NonFiniteError` naming the first NaN or infinite entry.
+
+    >>> check_finite(np.array([1.0, np.inf]), "t")
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.NonFiniteError: t should be finite numbers; entry (1,) is inf
+    """
+    if not np.all(np.isfinite(arr)):
+        if arr.ndim == 0:
+            raise NonFiniteError(f"{name} should be a finite number, not {float(arr)!r}")
+        bad = tuple(int(i) for i in np.argwhere(~np.isfinite(arr))[0])
+        raise NonFiniteError(f"{name} should be finite numbers; entry {bad} is {float(arr[bad])!r}")
+
+
+def check_weights(w: FloatArray, name: str = "weights") -> None:
+    """Refuse weights that are not all > 0, or whose ratio exceeds :data:`MAX_WEIGHT_RATIO`.
+
+    >>> check_weights(np.array([1.0, 1e300, 1.0]))
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.WeightError: weights should have max / min <= 1e+15 (binary64 resolution), not 1e+300
+    """
+    if not np.all(w > 0.0):
+        i = int(np.argmin(w > 0.0))
+        raise WeightError(f"{name} should all be > 0; weight {i} is {float(w[i])!r}")
+    ratio = float(np.max(w)) / float(np.min(w))
+    if not ratio <= MAX_WEIGHT_RATIO:
+        raise WeightError(f"{name} should have max / min <= {MAX_WEIGHT_RATIO:g} "
+                          f"(binary64 resolution), not {ratio:g}")
+
+
+def check_degree(degree: int, what: str = "a curve") -> None:
+    """Raise :class:`~relief_cad.errors.DegreeError` when ``degree`` exceeds :data:`MAX_DEGREE`.
+
+    >>> check_degree(5000, "elevate")
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.DegreeError: elevate would give degree 5000; the largest supported degree is 256
+    """
+    if degree > MAX_DEGREE:
+        raise DegreeError(
+            f"{what} would give degree {degree}; the largest supported degree is {MAX_DEGREE}")
+
+
+def check_param(t: Any, name: str) -> float:
+    """Return a curve parameter as a finite float; refuse ``None``, strings, bools, NaN, 10**400.
+
+    >>> check_param("a", "t")
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InputTypeError: t should be a real number, not str
+    """
+    if not _is_real(t):
+        raise InputTypeError(f"{name} should be a real number, not {type(t).__name__}")
+    try:
+        value = float(t)
+    except OverflowError as exc:
+        raise NonFiniteError(f"{name} should be a finite number, not an integer too large "
+                             "for a float") from exc
+    if not math.isfinite(value):
+        raise NonFiniteError(f"{name} should be a finite number, not {value!r}")
+    return value
+
+
+def check_span(k: Any) -> float:
+    """Return the relief span ``k`` (a real number > 0 and != 1, as the relief perspective needs).
+
+    >>> check_span(1.0)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.SpanError: the span k should be > 0 and != 1, not 1.0
+    """
+    if not _is_real(k):
+        raise InputTypeError(f"the span k should be a real number, not {type(k).__name__}")
+    try:
+        kv = float(k)
+    except OverflowError as exc:
+        raise SpanError("the span k should be finite, not an integer too large for a float") from exc
+    if not math.isfinite(kv):
+        raise SpanError(f"the span k should be finite, not {kv!r}")
+    if kv <= 0.0 or kv == 1.0:
+        raise SpanError(f"the span k should be > 0 and != 1, not {kv!r}")
+    return kv

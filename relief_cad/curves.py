@@ -23,48 +23,21 @@ True
 from __future__ import annotations
 
 import math
-from typing import Any, overload
+from typing import overload
 
 import numpy as np
 
+from ._checks import as_real_array, check_degree, check_finite, check_param, check_weights
 from ._types import FloatArray, ParamsLike, PointsLike
 from .errors import (
     DegenerateCurveError,
     DegreeError,
-    InputTypeError,
-    NonFiniteError,
     ProjectionError,
     ShapeError,
     WeightError,
 )
 
 __all__ = ["RationalBezier"]
-
-
-def _as_float_array(value: Any, name: str) -> FloatArray:
-    if isinstance(value, RationalBezier):
-        raise InputTypeError(f"{name} should be an array of numbers, not a RationalBezier")
-    try:
-        arr = np.array(value, dtype=np.float64, order="C")
-    except (TypeError, ValueError) as exc:
-        raise InputTypeError(
-            f"{name} should be an array of real numbers, not {type(value).__name__}"
-        ) from exc
-    return arr
-
-
-def _check_finite(arr: FloatArray, name: str) -> None:
-    if not np.all(np.isfinite(arr)):
-        if arr.ndim == 0:
-            raise NonFiniteError(f"{name} should be a finite number, not {float(arr)!r}")
-        bad = tuple(int(i) for i in np.argwhere(~np.isfinite(arr))[0])
-        raise NonFiniteError(f"{name} should be finite numbers; entry {bad} is {float(arr[bad])!r}")
-
-
-def _check_weights(w: FloatArray, name: str = "weights") -> None:
-    if not np.all(w > 0.0):
-        i = int(np.argmin(w > 0.0))
-        raise WeightError(f"{name} should all be > 0; weight {i} is {float(w[i])!r}")
 
 
 def _decasteljau(h: FloatArray, t: FloatArray) -> tuple[FloatArray, FloatArray]:
@@ -172,7 +145,7 @@ class RationalBezier:
     _polynomial: bool | None
 
     def __init__(self, control_points: PointsLike, weights: ParamsLike | None = None) -> None:
-        pts = _as_float_array(control_points, "control_points")
+        pts = as_real_array(control_points, "control_points")
         if pts.ndim != 2 or pts.shape[1] not in (2, 3):
             raise ShapeError(
                 f"control_points should have shape (n + 1, 2) or (n + 1, 3), not {pts.shape}"
@@ -181,23 +154,24 @@ class RationalBezier:
             raise DegreeError(
                 f"A curve needs at least 2 control points (degree >= 1), not {pts.shape[0]}."
             )
-        _check_finite(pts, "control_points")
+        check_degree(pts.shape[0] - 1)
+        check_finite(pts, "control_points")
         npts = pts.shape[0]
         if weights is None:
             w = np.ones(npts)
         else:
-            w = _as_float_array(weights, "weights")
+            w = as_real_array(weights, "weights")
             if w.shape != (npts,):
                 raise ShapeError(
                     f"weights should have shape ({npts},) to match {npts} control points, not {w.shape}"
                 )
-            _check_finite(w, "weights")
-            _check_weights(w)
+            check_finite(w, "weights")
+            check_weights(w)
         h = np.empty((npts, pts.shape[1] + 1))
         with np.errstate(over="ignore", invalid="ignore"):
             h[:, :-1] = pts * w[:, None]
         h[:, -1] = w
-        _check_finite(h, "weighted control points")
+        check_finite(h, "weighted control points")
         self._set(h, pts, w)
 
     def _set(self, h: FloatArray, pts: FloatArray | None, w: FloatArray | None) -> None:
@@ -244,7 +218,7 @@ class RationalBezier:
         ...
         relief_cad.errors.WeightError: homogeneous weights (last column) should all be > 0; weight 1 is -1.0
         """
-        h = _as_float_array(homogeneous, "homogeneous")
+        h = as_real_array(homogeneous, "homogeneous")
         if h.ndim != 2 or h.shape[1] not in (3, 4):
             raise ShapeError(
                 f"homogeneous control points should have shape (n + 1, 3) or (n + 1, 4), not {h.shape}"
@@ -253,10 +227,11 @@ class RationalBezier:
             raise DegreeError(
                 f"A curve needs at least 2 control points (degree >= 1), not {h.shape[0]}."
             )
-        _check_finite(h, "homogeneous")
-        _check_weights(h[:, -1], "homogeneous weights (last column)")
+        check_degree(h.shape[0] - 1)
+        check_finite(h, "homogeneous")
+        check_weights(h[:, -1], "homogeneous weights (last column)")
         pts = h[:, :-1] / h[:, -1:]
-        _check_finite(pts, "control points (homogeneous / weight)")
+        check_finite(pts, "control points (homogeneous / weight)")
         obj = cls.__new__(cls)
         obj._set(h, pts, h[:, -1].copy())
         return obj
@@ -392,11 +367,11 @@ class RationalBezier:
         return deriv
 
     def _eval(self, t: ParamsLike, derivative: bool) -> tuple[FloatArray, FloatArray]:
-        tt = _as_float_array(t, "t")
+        tt = as_real_array(t, "t")
         scalar = tt.ndim == 0
         if tt.ndim > 1:
             raise ShapeError(f"t should be a scalar or a 1-D array, not shape {tt.shape}")
-        _check_finite(tt, "t")
+        check_finite(tt, "t")
         tv = tt.reshape(-1)
         value, dvalue = _decasteljau(self._h, tv)
         w = value[:, -1:]
@@ -465,7 +440,7 @@ class RationalBezier:
         >>> left.control_points.tolist(), right.control_points.tolist()
         ([[0.0, 0.0], [0.5, 0.5]], [[0.5, 0.5], [2.0, 2.0]])
         """
-        tv = float(t)
+        tv = check_param(t, "split parameter t")
         if not (0.0 < tv < 1.0):
             raise DegenerateCurveError(f"split parameter should lie in (0, 1), not {t!r}")
         h = self._h
@@ -507,10 +482,8 @@ class RationalBezier:
         ...
         relief_cad.errors.DegenerateCurveError: segment needs t0 != t1, got t0 = t1 = 0.5
         """
-        a = float(t0)
-        b = float(t1)
-        if not (math.isfinite(a) and math.isfinite(b)):
-            raise NonFiniteError(f"segment bounds should be finite, not ({t0!r}, {t1!r})")
+        a = check_param(t0, "segment bound t0")
+        b = check_param(t1, "segment bound t1")
         if a == b:
             raise DegenerateCurveError(f"segment needs t0 != t1, got t0 = t1 = {a!r}")
         n = self.degree
@@ -524,7 +497,7 @@ class RationalBezier:
                 f"the piece over [{a!r}, {b!r}] would have non-positive weights "
                 f"{h[:, -1].tolist()}: it reaches past a point at infinity of the curve"
             )
-        _check_finite(h, "segment control points")
+        check_finite(h, "segment control points")
         return RationalBezier._trusted(h)
 
     def reversed(self) -> RationalBezier:
@@ -551,6 +524,7 @@ class RationalBezier:
         """
         if not isinstance(r, (int, np.integer)) or r < 0:
             raise DegreeError(f"elevate needs r >= 0, not {r!r}")
+        check_degree(self.degree + int(r), "elevate")
         return RationalBezier._trusted(_elevate_rows(self._h.copy(), int(r)))
 
     def standard_form(self) -> RationalBezier:
@@ -609,11 +583,11 @@ class RationalBezier:
         >>> RationalBezier([[0, 0], [1, 0]]).transformed(shift).control_points.tolist()
         [[5.0, 0.0], [6.0, 0.0]]
         """
-        m = _as_float_array(matrix, "matrix")
+        m = as_real_array(matrix, "matrix")
         k = self.dim + 1
         if m.shape != (k, k):
             raise ShapeError(f"matrix should have shape ({k}, {k}) for a {self.dim}-D curve, not {m.shape}")
-        _check_finite(m, "matrix")
+        check_finite(m, "matrix")
         h = self._h @ m.T
         if not np.all(h[:, -1] > 0.0):
             i = int(np.argmin(h[:, -1] > 0.0))
@@ -621,7 +595,7 @@ class RationalBezier:
                 f"the transformed weights should all be > 0; weight {i} becomes {float(h[i, -1])!r} "
                 "(the map sends that control point to or past infinity)"
             )
-        _check_finite(h, "transformed control points")
+        check_finite(h, "transformed control points")
         return RationalBezier._trusted(h)
 
     def embedded(self, dim: int = 3) -> RationalBezier:

@@ -62,7 +62,15 @@ from typing import Literal
 
 import numpy as np
 
-from ._checks import DEFAULT_BUDGET, OnBudget, check_budget, check_curve, check_on_budget, check_tol
+from ._checks import (
+    DEFAULT_BUDGET,
+    OnBudget,
+    as_real_array,
+    check_budget,
+    check_curve,
+    check_on_budget,
+    check_tol,
+)
 from ._kernels import (
     KIND_CROSSING,
     KIND_OVERLAP,
@@ -82,7 +90,7 @@ from .errors import (
 )
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
 from .space import intersect_space
-from .tolerances import default_tolerance
+from .tolerances import default_tolerance, rounding_floor
 
 __all__ = [
     "DEFAULT_BUDGET",
@@ -314,10 +322,13 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
         result: IntersectionList = intersect_space(a, b, tol=tol, budget=budget, on_budget=on_budget)
         return result
     if b is None:
-        ftol = check_tol(tol) or default_tolerance(a)
+        given = check_tol(tol)
+        ftol = default_tolerance(a) if given is None else max(given, rounding_floor(a))
         return finish(_self_planar(a.control_points, a.weights, ftol, nbudget), on_budget)
-    # tol <= 0 asks the kernel for default_tolerance(a, b)
-    ftol = check_tol(tol) or -1.0
+    # tol <= 0 asks the kernel for default_tolerance(a, b); a given tol is raised to the data's
+    # rounding level (tolerances.rounding_floor)
+    given = check_tol(tol)
+    ftol = -1.0 if given is None else max(given, rounding_floor(a, b))
     whole = whole_overlap(a, b, default_tolerance(a, b) if ftol <= 0.0 else ftol) if (
         np.array_equal(a.control_points[0], b.control_points[0])
         or np.array_equal(a.control_points[0], b.control_points[-1])) else None
@@ -368,8 +379,8 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     check_curve(curve, "curve")
     if curve.dim != 2:
         raise ShapeError(f"intersect_line needs a planar curve (dim 2), not dim {curve.dim}")
-    p = np.asarray(point, dtype=np.float64)
-    d = np.asarray(direction, dtype=np.float64)
+    p = as_real_array(point, "point")
+    d = as_real_array(direction, "direction")
     if p.shape != (2,) or d.shape != (2,):
         raise ShapeError(f"point and direction should have shape (2,), not {p.shape} and {d.shape}")
     if not (np.all(np.isfinite(p)) and np.all(np.isfinite(d))):
@@ -439,6 +450,8 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
     >>> [[r.t for r in lst] for lst in intersect_many([(a, b), (b, a)])]
     [[0.5], [0.5]]
     """
+    if not isinstance(pairs, Iterable):
+        raise InputTypeError(f"pairs should be an iterable of (a, b) tuples, not {type(pairs).__name__}")
     plist = list(pairs)
     check_on_budget(on_budget)
     nbudget = check_budget(budget)

@@ -22,12 +22,12 @@ the points at infinity), the neutral plane ``z = -k`` (sent to infinity).
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import overload
 
 import numpy as np
 
+from ._checks import as_real_array, check_span
 from ._types import FloatArray, PointsLike
 from .curves import RationalBezier
 from .errors import (
@@ -36,7 +36,6 @@ from .errors import (
     NonFiniteError,
     ProjectionError,
     ShapeError,
-    SpanError,
     WeightError,
 )
 
@@ -51,20 +50,8 @@ __all__ = [
 ]
 
 
-def _check_span(k: float) -> float:
-    try:
-        kv = float(k)
-    except (TypeError, ValueError) as exc:
-        raise InputTypeError(f"the span k should be a real number, not {type(k).__name__}") from exc
-    if not math.isfinite(kv):
-        raise SpanError(f"the span k should be finite, not {kv!r}")
-    if kv <= 0.0 or kv == 1.0:
-        raise SpanError(f"the span k should be > 0 and != 1, not {kv!r}")
-    return kv
-
-
 def _as_points3(x: PointsLike) -> tuple[FloatArray, bool]:
-    arr = np.array(x, dtype=np.float64)
+    arr = as_real_array(x, "points")
     if arr.ndim == 1 and arr.shape[0] == 3:
         return arr[None, :], True
     if arr.ndim == 2 and arr.shape[1] == 3:
@@ -137,7 +124,7 @@ class ReliefPerspective:
     """
 
     def __init__(self, k: float = 2.0) -> None:
-        self.k: float = _check_span(k)
+        self.k: float = check_span(k)
         kk = self.k
         self.centre: FloatArray = np.zeros(3)
         self.image_plane_z: float = 1.0
@@ -333,7 +320,7 @@ def preimage_of_lift(curve: RationalBezier, k: float) -> RationalBezier:
     relief_cad.errors.WeightError: the construction needs 1 + k > w_i: weight 1 is 4.0 and k = 2.0; ...
     """
     planar = _require_curve(curve, 2, "the planar curve P")
-    kv = _check_span(k)
+    kv = check_span(k)
     w = planar.weights
     bad = np.nonzero(w >= 1.0 + kv)[0]
     if bad.size:
@@ -360,7 +347,7 @@ def relief_of_lift(curve: RationalBezier, k: float) -> RationalBezier:
     [3.0, 3.0]
     """
     planar = _require_curve(curve, 2, "the planar curve P")
-    kv = _check_span(k)
+    kv = check_span(k)
     h = planar.homogeneous
     r = np.empty((h.shape[0], 4))
     r[:, :3] = (1.0 + kv) * h
@@ -468,7 +455,7 @@ def find_neutral_plane(curve: RationalBezier, k: float = 2.0, *, rtol: float = 1
     """
     if not isinstance(curve, RationalBezier):
         raise InputTypeError(f"the curve should be a RationalBezier, not {type(curve).__name__}")
-    kv = _check_span(k)
+    kv = check_span(k)
     space = curve.embedded(3)
     h = space.homogeneous
     npts = h.shape[0]

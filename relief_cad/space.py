@@ -42,7 +42,7 @@ from typing import Literal
 
 import numpy as np
 
-from ._checks import check_budget, check_on_budget, check_tol
+from ._checks import check_budget, check_on_budget, check_span, check_tol
 from ._kernels import (
     KIND_OVERLAP,
     KIND_UNRESOLVED,
@@ -57,7 +57,7 @@ from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError
 from .relief import ReliefPerspective, central_projection
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
-from .tolerances import default_tolerance
+from .tolerances import default_tolerance, is_point_like, rounding_floor
 
 __all__ = ["ReliefFrame", "ReliefScheme", "intersect_space", "relief_scheme"]
 
@@ -237,6 +237,8 @@ def _monotone(points: FloatArray) -> bool:
 
 def _self_rows(curve: RationalBezier, tol: float, budget: int, k: float) -> FloatArray:
     """Self-intersections: split into monotone pieces, intersect every pair of pieces."""
+    if is_point_like(curve, tol):
+        return np.empty((0, SPACE_COLS))  # a point has no self-intersection
     pieces: list[tuple[float, float, RationalBezier]] = []
     stack = [(0.0, 1.0, curve, 0)]
     while stack:
@@ -335,9 +337,12 @@ def intersect_space(
             f"{type(a).__name__} and {type(b).__name__}"
         )
     a3 = a if a.dim == 3 else a.embedded(3)
+    k = check_span(k)
     check_on_budget(on_budget)
     nbudget = check_budget(budget)
     ftol = check_tol(tol)
+    if ftol is not None:  # a given tol is raised to the data's rounding level
+        ftol = max(ftol, rounding_floor(a3) if b is None else rounding_floor(a3, b))
     if b is None:
         tol_s = default_tolerance(a3) if ftol is None else ftol
         items, boxes = _rows_to_results(_self_rows(a3, tol_s, nbudget, k))

@@ -9,10 +9,13 @@ intersectors use :func:`default_tolerance` of the input curves:
         + \mathrm{ROUNDING\_ULPS} \cdot \varepsilon \cdot \max |x|
 
 where ``size`` is the diagonal of the joint bounding box of the *curves themselves*
-(sampled at ``2 (n + 1) + 1`` parameters each; the control polygon of an ill-conditioned
-curve can be a million times larger than the curve) and ``max |x|`` the largest absolute
+(sampled at ``min(2 n + 3, 65)`` parameters each, so the cost is O(n^2) in the degree; the
+control polygon of an ill-conditioned curve can be a million times larger than the curve) and
+``max |x|`` the largest absolute
 control-point coordinate (the second term keeps the tolerance above the rounding noise of
-the data: curves far from the origin, or evaluated from huge control points).
+the data: curves far from the origin, or evaluated from huge control points). The diagonal is
+computed on data scaled by ``max |x|``, so coordinates up to the float range (1e300) do not
+overflow it.
 
 >>> import numpy as np
 >>> round(default_tolerance(np.array([[0.0, 0.0], [3.0, 4.0]])), 12)
@@ -37,6 +40,8 @@ __all__ = [
     "RELATIVE_TOLERANCE",
     "ROUNDING_ULPS",
     "default_tolerance",
+    "is_point_like",
+    "rounding_floor",
 ]
 
 RELATIVE_TOLERANCE: float = 1e-9
@@ -49,6 +54,9 @@ PARAMETER_TOLERANCE: float = 1e-15
 """Parameter-space resolution below which two parameters are the same (dimensionless)."""
 
 _EPS = float(np.finfo(np.float64).eps)
+
+_SAMPLES = 65
+"""Most parameters sampled per curve for its size (keeps the cost O(n^2) in the degree)."""
 
 CurveOrPoints = Union["RationalBezier", FloatArray, Iterable[FloatArray]]
 
@@ -77,26 +85,71 @@ def default_tolerance(*inputs: CurveOrPoints) -> float:
     >>> default_tolerance(steep) < 1e-9 * 1e6
     True
     """
+    from ._checks import as_real_array, check_finite
     from .curves import RationalBezier
+    from .errors import InputTypeError
 
+    if not inputs:
+        raise InputTypeError("default_tolerance needs at least one curve or array of points")
     extents: list[FloatArray] = []
     coords: list[FloatArray] = []
     for item in inputs:
         if isinstance(item, RationalBezier):
-            samples = item.evaluate(np.linspace(0.0, 1.0, 2 * (item.degree + 1) + 1))
-            extents.append(samples)
+            extents.append(item.evaluate(np.linspace(0.0, 1.0, min(2 * item.degree + 3, _SAMPLES))))
             coords.append(item.control_points)
-        else:
-            arr = np.asarray(item, dtype=np.float64)
-            arr = arr.reshape(-1, arr.shape[-1])
-            extents.append(arr)
-            coords.append(arr)
+            continue
+        arr = as_real_array(item, "default_tolerance input")
+        if arr.ndim == 0 or arr.size == 0:
+            raise InputTypeError("default_tolerance needs curves or non-empty (m, d) arrays of points, "
+                                 f"not an array of shape {arr.shape}")
+        check_finite(arr, "default_tolerance input")
+        arr = arr.reshape(-1, arr.shape[-1])
+        extents.append(arr)
+        coords.append(arr)
+    return _tolerance_of(extents, coords)
+
+
+def _tolerance_of(extents: list[FloatArray], coords: list[FloatArray]) -> float:
+    """The rule of the module docstring, computed on scaled data so that no norm overflows."""
     dim = max(a.shape[1] for a in extents)
     pad = [np.hstack([a, np.zeros((a.shape[0], dim - a.shape[1]))]) for a in extents]
     stacked = np.vstack(pad)
-    size = float(np.linalg.norm(stacked.max(axis=0) - stacked.min(axis=0)))
     big = max(float(np.max(np.abs(c))) for c in coords)
+    scale = max(big, float(np.max(np.abs(stacked))))
+    if scale == 0.0:
+        return 1e-300
+    size = float(np.linalg.norm((stacked.max(axis=0) - stacked.min(axis=0)) / scale)) * scale
     tol = RELATIVE_TOLERANCE * size + ROUNDING_ULPS * _EPS * big
     if not math.isfinite(tol) or tol <= 0.0:
         return 1e-300
     return tol
+
+
+def is_point_like(curve: RationalBezier, tol: float) -> bool:
+    """True when every control point lies within ``tol`` of the first one (model units).
+
+    A rational Bézier curve with positive weights lies in the convex hull of its control points,
+    so such a curve is a single point up to ``tol``: it has no self-intersection, and the
+    self-intersection paths answer at once instead of subdividing it to their depth limit.
+
+    >>> from relief_cad import RationalBezier
+    >>> is_point_like(RationalBezier([[1.0, 2.0, 3.0], [1.0, 2.0, 3.0 + 1e-17]]), 1e-12)
+    True
+    """
+    pts = curve.control_points
+    return bool(np.max(np.abs(pts - pts[0])) <= tol)
+
+
+def rounding_floor(*curves: RationalBezier) -> float:
+    """The rounding level of the data: ``ROUNDING_ULPS * eps * max |x|`` over all control points.
+
+    Every tolerance (given or default) is raised to at least this distance, because points
+    computed from such coordinates are only known to about that accuracy: two lines crossing at
+    1e-16 apart in rounding are still a crossing. No product is formed, so nothing overflows.
+
+    >>> from relief_cad import RationalBezier
+    >>> rounding_floor(RationalBezier([[0.0, 0.0], [1.0, 2.0]])) == ROUNDING_ULPS * _EPS * 2.0
+    True
+    """
+    big = max(float(np.max(np.abs(c.control_points))) for c in curves)
+    return max(ROUNDING_ULPS * _EPS * big, 1e-300)
