@@ -218,6 +218,12 @@ def box_corners(box: Any) -> tuple[float, float, float, float, float, float]:
     """Return ``(xmin, ymin, zmin, xmax, ymax, zmax)`` of a ``Bnd_Box``.
 
     OCP 8.0 cannot convert the return value of ``Bnd_Box.Get``; ``CornerMin``/``CornerMax`` work in both.
+
+    >>> from OCP.Bnd import Bnd_Box
+    >>> from OCP.gp import gp_Pnt
+    >>> box = Bnd_Box(gp_Pnt(0, 0, 0), gp_Pnt(1, 2, 3))
+    >>> box_corners(box)
+    (0.0, 0.0, 0.0, 1.0, 2.0, 3.0)
     """
     lo, hi = box.CornerMin(), box.CornerMax()
     return (lo.X(), lo.Y(), lo.Z(), hi.X(), hi.Y(), hi.Z())
