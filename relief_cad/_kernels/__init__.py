@@ -44,6 +44,7 @@ import sys
 from types import ModuleType
 
 __all__ = [
+    "_space_frame",
     "COMPILED",
     "KIND_CROSSING",
     "KIND_OVERLAP",
