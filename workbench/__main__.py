@@ -8,13 +8,17 @@ Exit status: 0 everything asked for was done; 1 some items or inputs failed (the
 from __future__ import annotations
 
 import argparse
+import contextlib
+import signal
 import sys
 import time
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
 __all__ = [
     "main",
+    "cli",
     "build_parser",
     "EXIT_OK",
     "EXIT_FAILED",
@@ -345,11 +349,45 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
+@contextlib.contextmanager
+def _held_interrupt() -> Iterator[None]:
+    """Hold a Ctrl-C that comes during the block and raise it as KeyboardInterrupt at its end.
+
+    OCP's extension modules are pybind11 modules: a KeyboardInterrupt raised while one
+    initialises comes back as an ``ImportError`` (which an ``except ImportError`` then swallows)
+    and leaves the type registry half filled, so that every later ``import OCP`` in that process
+    and in the worker processes forked from it fails ("... is already defined").
+    """
+    held: list[int] = []
+    old = signal.signal(signal.SIGINT, lambda signum, frame: held.append(signum))
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, old)
+    if held:
+        raise KeyboardInterrupt
+
+
+def _preload() -> None:
+    """Import relief_cad and the CAD layer (OCP) up front, where a Ctrl-C cannot cut them in half."""
+    import relief_cad  # noqa: F401
+
+    try:
+        import relief_cad.cad  # noqa: F401
+    except ImportError:  # no OCP: the command that needs it says so
+        pass
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the workbench command line; returns the exit status (see the module docstring)."""
-    from relief_cad.errors import ReliefCadError
-
-    args = build_parser().parse_args(argv)
+    try:
+        args = build_parser().parse_args(argv)
+        with _held_interrupt():
+            _preload()
+        from relief_cad.errors import ReliefCadError
+    except KeyboardInterrupt:
+        print("\ninterrupted before any work was done", file=sys.stderr)
+        return EXIT_INTERRUPTED
     try:
         return int(args.func(args))
     except (_Usage, ReliefCadError) as exc:
@@ -360,5 +398,18 @@ def main(argv: list[str] | None = None) -> int:
         return EXIT_INTERRUPTED
 
 
+def cli() -> None:
+    """The console entry point: :func:`main`, then exit with its status.
+
+    Once the command is done, a Ctrl-C has nothing left to stop: it is ignored from then on, so
+    that one arriving while the interpreter shuts down (OCP's modules take a moment to unload)
+    cannot kill the process by the signal and hide the real exit status. A Ctrl-C before
+    ``main`` starts (while Python imports the standard library) is Python's own.
+    """
+    status = main()
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    sys.exit(status)
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    cli()

@@ -15,6 +15,7 @@ from relief_cad_workbench.__main__ import EXIT_INTERRUPTED, EXIT_OK
 from relief_cad_workbench.corpus import Item, random_family, read_corpus, write_corpus
 
 ROOT = Path(__file__).resolve().parents[2]
+N = 400  # corpus items
 
 
 def start(corpus: Path, out: Path) -> subprocess.Popen[str]:
@@ -49,8 +50,9 @@ def wait_for(out: Path, n: int, proc: subprocess.Popen[str], budget: float = 240
 
 @pytest.fixture(scope="module")
 def corpus(tmp_path_factory) -> Path:
-    path = tmp_path_factory.mktemp("sigint") / "c90.jsonl"
-    assert write_corpus(path, random_family("cubic", 90, seed=21)) == 90
+    # large enough that the resumed run is still going when its Ctrl-C comes
+    path = tmp_path_factory.mktemp("sigint") / f"c{N}.jsonl"
+    assert write_corpus(path, random_family("cubic", N, seed=21)) == N
     return path
 
 
@@ -70,7 +72,8 @@ def test_one_sigint_stops_compare_within_10_s_and_it_resumes(corpus, tmp_path):
     t0 = time.monotonic()
     stdout, stderr = proc.communicate(timeout=60)
     assert time.monotonic() - t0 < 10.0, "compare took more than 10 s to stop on Ctrl-C"
-    assert proc.returncode == EXIT_INTERRUPTED and "run the same command again to resume" in stdout
+    assert proc.returncode == EXIT_INTERRUPTED, (proc.returncode, stdout, stderr)
+    assert "run the same command again to resume" in stdout, stdout
     assert "Traceback" not in stderr, stderr
     interrupted = records(out)
     assert killed <= set(interrupted) and len(interrupted) < len(ids)
@@ -78,6 +81,39 @@ def test_one_sigint_stops_compare_within_10_s_and_it_resumes(corpus, tmp_path):
     proc = start(corpus, out)
     stdout, stderr = proc.communicate(timeout=600)
     assert proc.returncode == EXIT_OK, stdout + stderr
-    assert f"resuming: {len(set(interrupted))} of 90" in stderr
+    assert f"resuming: {len(set(interrupted))} of {N}" in stderr
     final = records(out)
-    assert sorted(final) == sorted(ids) and len(final) == len(set(final)) == 90
+    assert sorted(final) == sorted(ids) and len(final) == len(set(final)) == N
+
+
+@pytest.mark.parametrize("delay", [0.5, 1.0, 1.5])
+def test_a_sigint_during_start_up_exits_130_without_a_traceback(corpus, tmp_path, delay):
+    """A Ctrl-C while the workbench imports OCP (about a second) must not cut that import in half.
+
+    pybind11 turns a KeyboardInterrupt inside an extension's initialisation into an ImportError;
+    swallowed, it left OCP half registered and every worker's ``import OCP`` failing, so the run
+    went on and exited 1 with an ImportError, or the signal was lost.
+    """
+    proc = start(corpus, tmp_path / "run")
+    time.sleep(delay)
+    os.killpg(proc.pid, signal.SIGINT)
+    stdout, stderr = proc.communicate(timeout=60)
+    assert proc.returncode == EXIT_INTERRUPTED, (proc.returncode, stdout, stderr)
+    assert "interrupted" in stdout + stderr or "run the same command again to resume" in stdout
+    assert "Traceback" not in stderr and "ImportError" not in stdout + stderr, stderr
+
+
+def test_a_sigint_after_the_work_is_done_keeps_the_exit_status(tmp_path):
+    """Once a command has finished, a Ctrl-C while Python shuts down must not turn 0 into -SIGINT."""
+    path = tmp_path / "c8.jsonl"
+    assert write_corpus(path, random_family("cubic", 8, seed=3)) == 8
+    proc = start(path, tmp_path / "run")
+    t0 = time.monotonic()
+    while not (tmp_path / "run" / "summary.json").exists() and proc.poll() is None:
+        assert time.monotonic() - t0 < 240, "no summary after 240 s"
+        time.sleep(0.01)
+    if proc.poll() is None:
+        os.killpg(proc.pid, signal.SIGINT)
+    stdout, stderr = proc.communicate(timeout=60)
+    assert proc.returncode in (EXIT_OK, EXIT_INTERRUPTED), (proc.returncode, stdout, stderr)
+    assert "Traceback" not in stderr, stderr
