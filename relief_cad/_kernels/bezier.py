@@ -196,7 +196,7 @@ def _curve_box_update(
     m = P.shape[0]
     d = P.shape[1]
     ns = 2 * m + 1
-    wk = np.empty((m, d + 1))
+    wk: cython.double[:, :] = np.empty((m, d + 1))
     for k in range(ns):
         t = k / (ns - 1.0)
         s = 1.0 - t
@@ -226,7 +226,7 @@ def _default_tol(
     times the largest control-point coordinate (the rounding level of the data).
     """
     d = PA.shape[1]
-    box = np.empty(2 * d)
+    box: cython.double[:] = np.empty(2 * d)
     for j in range(d):
         box[2 * j] = math.inf
         box[2 * j + 1] = -math.inf
@@ -261,9 +261,10 @@ def _homog(
     for i in range(m):
         wmax = max(wmax, W[i])
     H = np.empty((m, 3))
+    Hv: cython.double[:, :] = H
     for i in range(m):
         w = W[i] / wmax
-        H[i, 0] = w * ((P[i, 0] - cx) * scale)
-        H[i, 1] = w * ((P[i, 1] - cy) * scale)
-        H[i, 2] = w
+        Hv[i, 0] = w * ((P[i, 0] - cx) * scale)
+        Hv[i, 1] = w * ((P[i, 1] - cy) * scale)
+        Hv[i, 2] = w
     return H
