@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 import numbers
+import os
 from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
@@ -54,6 +55,7 @@ __all__ = [
     "check_curve",
     "check_on_budget",
     "check_tol",
+    "check_workers",
 ]
 
 # Near-tangent crossings (angles down to 1e-8 at the default tolerance) keep the curves within tol
@@ -97,11 +99,21 @@ def check_curve(c: Any, name: str) -> RationalBezier:
     ...
     relief_cad.errors.InputTypeError: a should be a RationalBezier, not str
     """
-    from .curves import RationalBezier  # curves imports this module: the class is looked up late
-
-    if not isinstance(c, RationalBezier):
+    if not isinstance(c, _curve_class()):
         raise InputTypeError(f"{name} should be a RationalBezier, not {type(c).__name__}")
     return c
+
+
+_CURVE_CLASS: list[type] = []
+
+
+def _curve_class() -> type:
+    """:class:`~relief_cad.RationalBezier`, looked up on first use (curves imports this module)."""
+    if not _CURVE_CLASS:
+        from .curves import RationalBezier
+
+        _CURVE_CLASS.append(RationalBezier)
+    return _CURVE_CLASS[0]
 
 
 def check_tol(tol: Any, name: str = "tol") -> float | None:
@@ -156,6 +168,23 @@ def check_budget(budget: Any) -> int:
     if not 1 <= value <= MAX_BUDGET:
         raise InvalidInputError(f"budget should be an int from 1 to 2**62, not {value}")
     return value
+
+
+def check_workers(workers: Any) -> int:
+    """Return the number of worker threads (``None`` gives ``os.cpu_count()``, at least 1).
+
+    >>> check_workers(0)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InvalidInputError: workers should be an int >= 1 or None, not 0
+    """
+    if workers is None:
+        return max(1, os.cpu_count() or 1)
+    if isinstance(workers, bool) or not isinstance(workers, numbers.Integral):
+        raise InputTypeError(f"workers should be an int >= 1 or None, not {type(workers).__name__}")
+    if workers < 1:
+        raise InvalidInputError(f"workers should be an int >= 1 or None, not {int(workers)}")
+    return int(workers)
 
 
 def check_on_budget(on_budget: Any) -> OnBudget:

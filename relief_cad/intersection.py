@@ -58,6 +58,7 @@ from __future__ import annotations
 
 import gc
 from collections.abc import Iterable, Sequence
+from concurrent.futures import ThreadPoolExecutor
 from typing import Literal
 
 import numpy as np
@@ -70,6 +71,7 @@ from ._checks import (
     check_curve,
     check_on_budget,
     check_tol,
+    check_workers,
 )
 from ._kernels import (
     KIND_CROSSING,
@@ -112,10 +114,10 @@ def _point(t: float, u: float, point: FloatArray, kind: Literal["crossing", "tan
 
 def _rows_to_list(rows: FloatArray) -> IntersectionList:
     """Build the sorted :class:`IntersectionList` of kernel result rows."""
+    if rows.shape[0] == 0:
+        return IntersectionList()
     items: list[Result] = []
     boxes: list[ParameterBox] = []
-    if rows.shape[0] == 0:
-        return IntersectionList(items, boxes)
     points = rows[:, 6:8].copy()
     points.flags.writeable = False
     for i, r in enumerate(rows.tolist()):
@@ -140,12 +142,9 @@ def _ro(arr: FloatArray) -> FloatArray:
 
 
 def _planar(pa: FloatArray, wa: FloatArray, pb: FloatArray, wb: FloatArray, tol: float,
-            budget: int, trusted: bool = False) -> IntersectionList:
-    """Run the pair kernel; ``trusted`` arrays (a RationalBezier's) are already read-only C float64."""
-    if not trusted or not (pa.flags.c_contiguous and pb.flags.c_contiguous
-                           and wa.flags.c_contiguous and wb.flags.c_contiguous):
-        pa, wa, pb, wb = _ro(pa), _ro(wa), _ro(pb), _ro(wb)
-    return _rows_to_list(intersect_one_kernel(pa, wa, pb, wb, tol, budget))
+            budget: int) -> IntersectionList:
+    """Run the pair kernel on arrays made read-only C float64 first."""
+    return _rows_to_list(intersect_one_kernel(_ro(pa), _ro(wa), _ro(pb), _ro(wb), tol, budget))
 
 
 def _refined(a: RationalBezier, b: RationalBezier, res: IntersectionList, tol: float) -> IntersectionList:
@@ -313,12 +312,15 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
     >>> intersect(c, RationalBezier([[0, 0.5], [2, 0.5]]))[0].kind
     'tangent'
     """
-    check_curve(a, "a")
-    if b is not None:
+    if type(a) is not RationalBezier:  # the exact class needs no further look (hot path)
+        check_curve(a, "a")
+    if b is not None and type(b) is not RationalBezier:
         check_curve(b, "b")
     check_on_budget(on_budget)
     nbudget = check_budget(budget)
-    if a.dim == 3 or (b is not None and b.dim == 3):
+    pa = a.control_points
+    pb = None if b is None else b.control_points
+    if pa.shape[1] == 3 or (pb is not None and pb.shape[1] == 3):
         result: IntersectionList = intersect_space(a, b, tol=tol, budget=budget, on_budget=on_budget)
         return result
     if b is None:
@@ -329,12 +331,16 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
     # rounding level (tolerances.rounding_floor)
     given = check_tol(tol)
     ftol = -1.0 if given is None else max(given, rounding_floor(a, b))
+    x0 = pa.item(0)  # the first x decides for almost every pair (a scalar read costs 50 ns)
     whole = whole_overlap(a, b, default_tolerance(a, b) if ftol <= 0.0 else ftol) if (
-        np.array_equal(a.control_points[0], b.control_points[0])
-        or np.array_equal(a.control_points[0], b.control_points[-1])) else None
+        (x0 == pb.item(0) and np.array_equal(pa[0], pb[0]))
+        or (x0 == pb.item(-2) and np.array_equal(pa[0], pb[-1]))) else None
     if whole is not None:  # coincident curves: the clipping's slowest case, decided by geometry
         return IntersectionList([whole])
-    res = _planar(a.control_points, a.weights, b.control_points, b.weights, ftol, nbudget, trusted=True)
+    # a RationalBezier's arrays are float64: the kernel takes them as they are (strided views too)
+    res = _rows_to_list(intersect_one_kernel(pa, a.weights, pb, b.weights, ftol, nbudget))
+    if not res and not res.unresolved:
+        return res
     return finish(_refined(a, b, res, ftol), on_budget)
 
 
@@ -423,10 +429,35 @@ def _collect(res: FloatArray, points: FloatArray, out_items: list[list[Result]],
             out_boxes[j].append(ParameterBox(r[2], r[4], r[3], r[5]))
 
 
+def _batch_rows(pts: FloatArray, wts: FloatArray, offsets: FloatArray, idx: FloatArray,
+                tols: FloatArray, budget: int, workers: int) -> FloatArray:
+    """The batch kernel's rows for every pair of ``idx``, run in chunks on ``workers`` threads.
+
+    Chunks are contiguous runs of pairs; their rows are joined in chunk order with column 0
+    shifted back to the pair's index, so the output is the same for any ``workers``.
+    """
+    n = idx.shape[0]
+    if workers <= 1 or n < 2 * _MIN_CHUNK:
+        return intersect_batch_kernel(pts, wts, offsets, idx, tols, budget)
+    size = max(_MIN_CHUNK, -(-n // (4 * workers)))
+    starts = range(0, n, size)
+
+    def chunk(s: int) -> FloatArray:
+        rows = intersect_batch_kernel(pts, wts, offsets, idx[s:s + size], tols[s:s + size], budget)
+        rows[:, 0] += s
+        return rows
+
+    with ThreadPoolExecutor(max_workers=min(workers, len(starts))) as pool:
+        return np.concatenate(list(pool.map(chunk, starts)))
+
+
+_MIN_CHUNK = 64  # pairs per thread task, at least: below that the pool costs more than it gains
+
+
 def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
                    tol: float | None = None, budget: int | None = None,
-                   on_budget: OnBudget = "raise") -> list[IntersectionList]:
-    """Intersect many curve pairs; planar pairs run in one compiled call.
+                   on_budget: OnBudget = "raise", workers: int | None = None) -> list[IntersectionList]:
+    """Intersect many curve pairs; planar pairs run in compiled calls on a thread pool.
 
     Parameters
     ----------
@@ -436,18 +467,28 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
         One tolerance for every pair; default: each pair's own default tolerance.
     budget, on_budget
         As for :func:`intersect` (the budget is per pair).
+    workers : int, optional
+        Threads for the planar pairs (default ``os.cpu_count()``); the results are the same,
+        in the same order, for any value.
 
     Returns
     -------
     list of IntersectionList
         One result list per pair, in order.
 
+    Raises
+    ------
+    InputTypeError
+        If ``pairs`` is not an iterable of ``(a, b)`` tuples of curves, or ``workers`` not an int.
+    InvalidInputError
+        If ``workers < 1``.
+
     Examples
     --------
     >>> from relief_cad.curves import RationalBezier
     >>> a = RationalBezier([[0, 0], [2, 2]])
     >>> b = RationalBezier([[0, 2], [2, 0]])
-    >>> [[r.t for r in lst] for lst in intersect_many([(a, b), (b, a)])]
+    >>> [[r.t for r in lst] for lst in intersect_many([(a, b), (b, a)], workers=2)]
     [[0.5], [0.5]]
     """
     if not isinstance(pairs, Iterable):
@@ -456,6 +497,7 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
     check_on_budget(on_budget)
     nbudget = check_budget(budget)
     ftol = check_tol(tol)
+    nworkers = check_workers(workers)
     planar: list[int] = []
     out: list[IntersectionList | None] = [None] * len(plist)
     cps: list[FloatArray] = []
@@ -488,7 +530,7 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
         idx = np.arange(2 * len(planar), dtype=np.int64).reshape(-1, 2)
         # a tolerance <= 0 asks the kernel for the pair's default_tolerance
         tols = np.full(len(planar), -1.0 if ftol is None else ftol)
-        res = intersect_batch_kernel(pts, wts, offsets, idx, tols, nbudget)
+        res = _batch_rows(pts, wts, offsets, idx, tols, nbudget, nworkers)
         out_items: list[list[Result]] = [[] for _ in planar]
         out_boxes: list[list[ParameterBox]] = [[] for _ in planar]
         points = res[:, 6:8].copy()

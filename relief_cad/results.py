@@ -139,11 +139,12 @@ class IntersectionList(list[Result]):
     True
     """
 
+    __slots__ = ("unresolved",)
     unresolved: tuple[ParameterBox, ...]
 
     def __init__(self, items: Iterable[Result] = (), unresolved: Iterable[ParameterBox] = ()) -> None:
-        super().__init__(items)
-        self.unresolved = tuple(unresolved)
+        list.__init__(self, items)
+        self.unresolved = unresolved if type(unresolved) is tuple else tuple(unresolved)
 
     @property
     def complete(self) -> bool:

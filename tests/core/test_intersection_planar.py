@@ -222,6 +222,23 @@ def test_intersect_many_matches_single_calls() -> None:
         assert [(x.t, x.u, x.kind) for x in got] == [(x.t, x.u, x.kind) for x in single]
 
 
+def test_intersect_many_same_results_for_any_workers() -> None:
+    # 200 pairs run in chunks of 64: several thread tasks, joined back in pair order
+    rng = np.random.default_rng(23)
+    pairs = [(RationalBezier(rng.random((4, 2))), RationalBezier(rng.random((4, 2)))) for _ in range(200)]
+    runs = [intersect_many(pairs, workers=w) for w in (1, 2, 4)]
+    dumps = [[(repr(lst), lst.unresolved) for lst in run] for run in runs]
+    assert sum(len(lst) for lst in runs[0]) > 100  # random cubics cross often: a real comparison
+    assert dumps[0] == dumps[1] == dumps[2]
+
+
+@pytest.mark.parametrize(("workers", "error"), [(0, InvalidInputError), (1.5, InputTypeError),
+                                                (True, InputTypeError)])
+def test_intersect_many_rejects_bad_workers(workers: object, error: type[Exception]) -> None:
+    with pytest.raises(error, match="workers should be an int >= 1 or None"):
+        intersect_many([(PARABOLA, PARABOLA)], workers=workers)  # type: ignore[arg-type]
+
+
 def test_intersect_many_rejects_non_pairs() -> None:
     with pytest.raises(InputTypeError):
         intersect_many([PARABOLA])  # type: ignore[list-item]
