@@ -12,6 +12,7 @@ dict.
 
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 import time
@@ -126,26 +127,66 @@ def _time(fn: Callable[[], Any], repeat: int) -> float:
     return best
 
 
+_FRESH_CODE = """
+import time
+t0 = time.perf_counter()
+import relief_cad
+from relief_cad import RationalBezier as R, intersect
+t1 = time.perf_counter()
+intersect(R([[0, 0], [1, 2], [2, 0]]), R([[0, 1], [2, 0]]))
+t2 = time.perf_counter()
+intersect(R([[0, 0, 0], [1, 2, 1], [2, 0, 0]]), R([[0, 1, 0.5], [2, 0, 0.5]]))
+t3 = time.perf_counter()
+print(t1 - t0, t2 - t1, t3 - t2)
+"""
+
+
 def _startup() -> dict[str, float]:
-    code = (
-        "import time; t0 = time.perf_counter(); import relief_cad.intersection as I; "
-        "from relief_cad.curves import RationalBezier as R; t1 = time.perf_counter(); "
-        "I.intersect(R([[0, 0], [1, 2], [2, 0]]), R([[0, 1], [2, 0]])); t2 = time.perf_counter(); "
-        "print(t1 - t0, t2 - t1)"
-    )
-    subprocess.run([sys.executable, "-c", code], check=True, capture_output=True)  # warm the cache
-    out = subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, text=True)
-    imp, first = (float(v) for v in out.stdout.split())
-    return {"import_s": imp, "first_call_s": first}
+    """Import, first planar and first space call in a fresh interpreter (nothing warmed first)."""
+    out = subprocess.run([sys.executable, "-c", _FRESH_CODE], check=True, capture_output=True, text=True)
+    imp, planar, space = (float(v) for v in out.stdout.split())
+    return {"import_s": imp, "first_planar_s": planar, "first_space_s": space,
+            "fresh_total_s": imp + planar + space}
 
 
-def run(repeat: int = 5) -> dict[str, Any]:
+def _per_pair_ratios(pairs: list[tuple[RationalBezier, RationalBezier]], occ: list[Any]) -> list[float]:
+    """relief / OCCT time ratio of every pair on its own (best of 3 each)."""
+    out = []
+    for (a, b), (ca, cb) in zip(pairs, occ, strict=True):
+        t_rel = _time(lambda a=a, b=b: intersect(a, b), 3)
+        t_occ = _time(lambda ca=ca, cb=cb: occt_intersect(ca, cb), 3)
+        out.append(t_rel / t_occ)
+    return out
+
+
+def _batch_rates(n: int, repeat: int) -> dict[str, float]:
+    """Pairs/s of ``intersect_many`` on 1 thread and on all threads, and of the packed entry point."""
+    batch = _random_cubic_pairs(n, seed=3)
+    intersect_many(batch[:10])
+    t1 = _time(lambda: intersect_many(batch, workers=1), repeat)
+    tall = _time(lambda: intersect_many(batch), repeat)
+    # the same pairs through the packed-array entry point (no Python objects per pair)
+    pts = np.concatenate([c.control_points for pr in batch for c in pr])
+    offsets = np.arange(0, 4 * 2 * len(batch) + 1, 4)
+    idx = np.arange(2 * len(batch)).reshape(-1, 2)
+    wts = np.ones(pts.shape[0])
+    t_packed = _time(lambda: intersect_packed(pts, wts, offsets, idx), repeat)
+    return {"batch_pairs": n, "threads_all": os.cpu_count() or 1,
+            "batch_pairs_per_s_1_thread": n / t1, "batch_pairs_per_s_all_threads": n / tall,
+            "thread_speedup": t1 / tall, "packed_pairs_per_s_1_thread": n / t_packed}
+
+
+def run(repeat: int = 5, batch: int = 2000) -> dict[str, Any]:
     """Time relief_cad and OCCT on every case; return ``{"cases": [...], ...}``.
 
     Each case row holds ``us_relief``, ``us_occt`` (µs per pair, best of
-    ``repeat``), ``ratio`` (relief / OCCT), and the number of points each found.
+    ``repeat``), ``ratio`` (relief / OCCT), and the number of points each found;
+    ``worst_ratio`` is the largest case ratio, ``random_pair_ratios`` the median, 90 %
+    and worst ratio of the random cubics timed pair by pair. Batch rates are on ``batch``
+    random cubic pairs; the start-up figures come from a fresh interpreter.
     """
     rows = []
+    random_ratios: list[float] = []
     for name, pairs in cases().items():
         occ = [(occt_curve(a), occt_curve(b)) for a, b in pairs]
         n_rel = sum(len(intersect(a, b)) for a, b in pairs)
@@ -153,6 +194,8 @@ def run(repeat: int = 5) -> dict[str, Any]:
         reps = repeat if len(pairs) > 10 else repeat * 50
         t_rel = _time(lambda ps=pairs: [intersect(a, b) for a, b in ps], reps) / len(pairs)
         t_occ = _time(lambda oc=occ: [occt_intersect(ca, cb) for ca, cb in oc], reps) / len(pairs)
+        if len(pairs) > 10:
+            random_ratios = _per_pair_ratios(pairs, occ)
         rows.append(
             {
                 "case": name,
@@ -164,18 +207,11 @@ def run(repeat: int = 5) -> dict[str, Any]:
                 "points_occt": n_occ,
             }
         )
-    batch = _random_cubic_pairs(10_000, seed=3)
-    intersect_many(batch[:10])
-    t_batch = _time(lambda: intersect_many(batch), max(1, repeat // 2))
-    # the same pairs through the packed-array entry point (no Python objects per pair)
-    pts = np.concatenate([c.control_points for pr in batch for c in pr])
-    offsets = np.arange(0, 4 * 2 * len(batch) + 1, 4)
-    idx = np.arange(2 * len(batch)).reshape(-1, 2)
-    wts = np.ones(pts.shape[0])
-    intersect_packed(pts, wts, offsets, idx[:10])
-    t_packed = _time(lambda: intersect_packed(pts, wts, offsets, idx), max(1, repeat // 2))
-    out: dict[str, Any] = {"cases": rows, "batch_pairs_per_s": len(batch) / t_batch,
-                           "packed_pairs_per_s": len(batch) / t_packed}
+    out: dict[str, Any] = {"cases": rows, "worst_ratio": max(r["ratio"] for r in rows), "target_ratio": 0.25}
+    if random_ratios:
+        q = np.quantile(random_ratios, [0.5, 0.9, 1.0])
+        out["random_pair_ratios"] = {"median": float(q[0]), "p90": float(q[1]), "worst": float(q[2])}
+    out.update(_batch_rates(batch, max(1, repeat // 2)))
     out.update(_startup())
     return out
 
@@ -190,9 +226,15 @@ def _main() -> None:
             f"{row['case']:28s} {row['pairs']:6d} {row['us_relief']:10.2f} {row['us_occt']:10.2f} "
             f"{row['ratio']:7.3f} {row['points_relief']:>6d}/{row['points_occt']:<6d}"
         )
-    print(f"batch of 10,000 random cubic pairs: {r['batch_pairs_per_s']:,.0f} pairs/s (intersect_many), "
-          f"{r['packed_pairs_per_s']:,.0f} pairs/s (clipping.intersect_packed, raw rows)")
-    print(f"import: {r['import_s'] * 1e3:.0f} ms, first call (warm cache): {r['first_call_s'] * 1e3:.0f} ms")
+    print(f"worst case ratio {r['worst_ratio']:.3f} (target <= {r['target_ratio']}); "
+          "random cubics pair by pair: "
+          + ", ".join(f"{k} {v:.3f}" for k, v in r.get("random_pair_ratios", {}).items()))
+    print(f"batch of {r['batch_pairs']:,} random cubic pairs: {r['batch_pairs_per_s_1_thread']:,.0f} pairs/s "
+          f"on 1 thread, {r['batch_pairs_per_s_all_threads']:,.0f} on {r['threads_all']} "
+          f"({r['thread_speedup']:.2f}x); packed rows {r['packed_pairs_per_s_1_thread']:,.0f} pairs/s")
+    print(f"fresh process: import {r['import_s'] * 1e3:.0f} ms, "
+          f"first planar {r['first_planar_s'] * 1e3:.0f} ms, first space {r['first_space_s'] * 1e3:.0f} ms, "
+          f"total {r['fresh_total_s'] * 1e3:.0f} ms")
 
 
 if __name__ == "__main__":

@@ -175,7 +175,8 @@ def run(min_seconds: float = 0.3) -> dict[str, Any]:
             "ratio": t_ours / min(t_ee, t_ex),
             "found": {"relief_cad": ours(), "IntTools_EdgeEdge": edge_edge(), "extrema<=tol": extrema()},
         })
-    return {"benchmark": "space", "unit": "microseconds per pair", "rows": rows, "target_ratio": 0.05}
+    return {"benchmark": "space", "unit": "microseconds per pair", "rows": rows,
+            "worst_ratio": max(r["ratio"] for r in rows), "target_ratio": 0.05}
 
 
 def format_table(result: dict[str, Any]) -> str:
@@ -191,7 +192,8 @@ def format_table(result: dict[str, Any]) -> str:
             f"{r['extrema_us']:8.1f}us {r['ratio']:7.3f}  "
             f"{f['relief_cad']} / {f['IntTools_EdgeEdge']} / {f['extrema<=tol']}"
         )
-    lines.append(f"ratio = relief_cad / faster OCCT route; target <= {result['target_ratio']}")
+    lines.append(f"ratio = relief_cad / faster OCCT route; worst {result['worst_ratio']:.3f}, "
+                 f"target <= {result['target_ratio']}")
     return "\n".join(lines)
 
 
