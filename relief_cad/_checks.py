@@ -104,10 +104,10 @@ def check_curve(c: Any, name: str) -> RationalBezier:
     return c
 
 
-_CURVE_CLASS: list[type] = []
+_CURVE_CLASS: list[type[RationalBezier]] = []
 
 
-def _curve_class() -> type:
+def _curve_class() -> type[RationalBezier]:
     """:class:`~relief_cad.RationalBezier`, looked up on first use (curves imports this module)."""
     if not _CURVE_CLASS:
         from .curves import RationalBezier

@@ -62,6 +62,7 @@ from concurrent.futures import ThreadPoolExecutor
 from typing import Literal
 
 import numpy as np
+from numpy.typing import NDArray
 
 from ._checks import (
     DEFAULT_BUDGET,
@@ -319,8 +320,7 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
     check_on_budget(on_budget)
     nbudget = check_budget(budget)
     pa = a.control_points
-    pb = None if b is None else b.control_points
-    if pa.shape[1] == 3 or (pb is not None and pb.shape[1] == 3):
+    if pa.shape[1] == 3 or (b is not None and b.control_points.shape[1] == 3):
         result: IntersectionList = intersect_space(a, b, tol=tol, budget=budget, on_budget=on_budget)
         return result
     if b is None:
@@ -331,6 +331,7 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
     # rounding level (tolerances.rounding_floor)
     given = check_tol(tol)
     ftol = -1.0 if given is None else max(given, rounding_floor(a, b))
+    pb = b.control_points
     x0 = pa.item(0)  # the first x decides for almost every pair (a scalar read costs 50 ns)
     whole = whole_overlap(a, b, default_tolerance(a, b) if ftol <= 0.0 else ftol) if (
         (x0 == pb.item(0) and np.array_equal(pa[0], pb[0]))
@@ -429,7 +430,7 @@ def _collect(res: FloatArray, points: FloatArray, out_items: list[list[Result]],
             out_boxes[j].append(ParameterBox(r[2], r[4], r[3], r[5]))
 
 
-def _batch_rows(pts: FloatArray, wts: FloatArray, offsets: FloatArray, idx: FloatArray,
+def _batch_rows(pts: FloatArray, wts: FloatArray, offsets: NDArray[np.int64], idx: NDArray[np.int64],
                 tols: FloatArray, budget: int, workers: int) -> FloatArray:
     """The batch kernel's rows for every pair of ``idx``, run in chunks on ``workers`` threads.
 
@@ -438,17 +439,20 @@ def _batch_rows(pts: FloatArray, wts: FloatArray, offsets: FloatArray, idx: Floa
     """
     n = idx.shape[0]
     if workers <= 1 or n < 2 * _MIN_CHUNK:
-        return intersect_batch_kernel(pts, wts, offsets, idx, tols, budget)
+        rows: FloatArray = intersect_batch_kernel(pts, wts, offsets, idx, tols, budget)
+        return rows
     size = max(_MIN_CHUNK, -(-n // (4 * workers)))
     starts = range(0, n, size)
 
     def chunk(s: int) -> FloatArray:
-        rows = intersect_batch_kernel(pts, wts, offsets, idx[s:s + size], tols[s:s + size], budget)
-        rows[:, 0] += s
-        return rows
+        part: FloatArray = intersect_batch_kernel(pts, wts, offsets, idx[s:s + size], tols[s:s + size],
+                                                  budget)
+        part[:, 0] += s
+        return part
 
     with ThreadPoolExecutor(max_workers=min(workers, len(starts))) as pool:
-        return np.concatenate(list(pool.map(chunk, starts)))
+        joined: FloatArray = np.concatenate(list(pool.map(chunk, starts)))
+    return joined
 
 
 _MIN_CHUNK = 64  # pairs per thread task, at least: below that the pool costs more than it gains
