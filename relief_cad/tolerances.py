@@ -161,8 +161,9 @@ def size_of(*curves: RationalBezier | FloatArray) -> float:
 
 def _points_of(item: RationalBezier | FloatArray) -> FloatArray:
     """The control points of a curve, or an array of points as it is (already checked)."""
-    pts: FloatArray = getattr(item, "control_points", item)
-    return pts
+    if isinstance(item, np.ndarray):
+        return item
+    return item.control_points
 
 
 def _padded(points: FloatArray) -> FloatArray:
