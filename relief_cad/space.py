@@ -168,9 +168,12 @@ def relief_scheme(
         The frame; by default the first admissible one (the model's own when every control point
         has ``z > 0``, as for the paper's curves).
     k : float, default 2.0
-        Span of the relief perspective ``φ``.
+        Span of the relief perspective ``φ`` (a real number > 0 and != 1: else
+        :class:`~relief_cad.errors.SpanError` / :class:`~relief_cad.errors.InputTypeError`). It shapes
+        the reliefs ``a_relief``, ``b_relief``; the images ``ψ(φ(a))`` are the same for every ``k``.
     tol : float, optional
-        Space tolerance (model units) from which the planar one is derived.
+        Space tolerance (model units) from which the planar one is derived; resolved as in
+        :func:`intersect_space` (:func:`relief_cad.tolerances.resolve_tolerance`).
 
     Returns
     -------
