@@ -152,11 +152,27 @@ def size_of(*curves: RationalBezier | FloatArray) -> float:
     >>> size_of(RationalBezier([[0.0, 0.0], [3.0, 4.0]]), RationalBezier([[1e300, 0.0], [0.0, 0.0]]))
     1e+300
     """
-    pts = np.vstack([_padded(_points_of(c)) for c in curves])
-    big = float(np.max(np.abs(pts)))
+    return _extent(curves)[0]
+
+
+def _extent(items: tuple[RationalBezier | FloatArray, ...]) -> tuple[float, float]:
+    """``(size, max |x|)`` of the control points: one min and one max per input (cheap: hot path).
+
+    Inputs of fewer dimensions count as lying in ``x_d = 0`` (as :meth:`RationalBezier.embedded`).
+    """
+    los: list[list[float]] = []
+    his: list[list[float]] = []
+    for item in items:
+        pts = _points_of(item)
+        los.append(pts.min(axis=0).tolist())
+        his.append(pts.max(axis=0).tolist())
+    dim = max(len(lo) for lo in los)
+    lo = [min(v[j] if j < len(v) else 0.0 for v in los) for j in range(dim)]
+    hi = [max(v[j] if j < len(v) else 0.0 for v in his) for j in range(dim)]
+    big = max(max(-x for x in lo), max(hi))
     if big == 0.0:
-        return 0.0
-    return float(np.linalg.norm((pts.max(axis=0) - pts.min(axis=0)) / big)) * big
+        return 0.0, 0.0
+    return math.hypot(*((h - low) / big for h, low in zip(hi, lo, strict=True))) * big, big
 
 
 def _points_of(item: RationalBezier | FloatArray) -> FloatArray:
@@ -164,10 +180,6 @@ def _points_of(item: RationalBezier | FloatArray) -> FloatArray:
     if isinstance(item, np.ndarray):
         return item
     return item.control_points
-
-
-def _padded(points: FloatArray) -> FloatArray:
-    return points if points.shape[1] == 3 else np.hstack([points, np.zeros((points.shape[0], 1))])
 
 
 class ModelTolerance(float):
@@ -212,8 +224,8 @@ def resolve_tolerance(tol: float | None, *curves: RationalBezier | FloatArray) -
     """
     if tol is None:
         return default_tolerance(*curves)
-    size = size_of(*curves)
-    floor = rounding_floor(*curves)
+    size, big = _extent(curves)
+    floor = _floor(big)
     limit = MAX_TOLERANCE_FRACTION * size
     if tol > max(limit, floor) and size > 0.0 and not isinstance(tol, ModelTolerance):
         from .errors import ToleranceError
@@ -249,5 +261,8 @@ def rounding_floor(*curves: RationalBezier | FloatArray) -> float:
     >>> rounding_floor(RationalBezier([[0.0, 0.0], [1.0, 2.0]])) == ROUNDING_ULPS * _EPS * 2.0
     True
     """
-    big = max(float(np.max(np.abs(_points_of(c)))) for c in curves)
+    return _floor(_extent(curves)[1])
+
+
+def _floor(big: float) -> float:
     return max(ROUNDING_ULPS * _EPS * big, 1e-300)
