@@ -36,6 +36,7 @@ from .errors import (
     ToleranceTypeError,
     WeightError,
 )
+from .tolerances import ModelTolerance
 
 if TYPE_CHECKING:
     from .curves import RationalBezier
@@ -149,7 +150,7 @@ def check_tol(tol: Any, name: str = "tol") -> float | None:
                              f"not an integer of {len(str(abs(int(tol))))} digits") from exc
     if not math.isfinite(value) or value <= 0.0:
         raise ToleranceError(f"{name} should be a finite distance > 0 in model units, not {value!r}")
-    return value
+    return tol if isinstance(tol, ModelTolerance) else value  # a model's tolerance keeps its type
 
 
 def check_budget(budget: Any) -> int:

@@ -27,7 +27,9 @@ clip range is where both hulls reach ``>= 0``.
 from __future__ import annotations
 
 import numpy as np
+from numpy.typing import NDArray
 
+from ._checks import check_tol
 from ._kernels import (
     clip_range_kernel,
     fat_line_kernel,
@@ -35,7 +37,9 @@ from ._kernels import (
     intersect_batch_kernel,
 )
 from ._types import FloatArray
-from .errors import InvalidInputError, NonFiniteError, ShapeError, ToleranceError, WeightError
+from .curves import RationalBezier
+from .errors import InvalidInputError, NonFiniteError, ShapeError, WeightError
+from .tolerances import resolve_tolerance
 
 __all__ = [
     "RESULT_COLUMNS",
@@ -197,7 +201,8 @@ def intersect_packed(points: FloatArray, weights: FloatArray, offsets: FloatArra
     pairs : ndarray of int, shape (p, 2)
         Curve indices of each pair.
     tol : float, optional
-        Distance tolerance for every pair (default: each pair's default tolerance).
+        Distance tolerance for every pair (default: each pair's default tolerance); raised to
+        each pair's rounding floor (:func:`relief_cad.tolerances.resolve_tolerance`).
     budget : int
         Iteration budget per pair.
 
@@ -228,14 +233,26 @@ def intersect_packed(points: FloatArray, weights: FloatArray, offsets: FloatArra
         raise NonFiniteError("points and weights should be finite")
     if not np.all(w > 0.0):
         raise WeightError("weights should all be > 0")
-    if tol is not None and not (np.isfinite(tol) and tol > 0.0):
-        raise ToleranceError(f"tol should be a finite distance > 0, not {tol!r}")
+    given = check_tol(tol)
     if budget < 1:
         raise InvalidInputError(f"budget should be >= 1, not {budget}")
     p = p.view()  # read-only views (the kernels are compiled for read-only inputs);
     w = w.view()  # the caller's arrays stay writeable
     p.flags.writeable = False
     w.flags.writeable = False
-    tols = np.full(pr.shape[0], -1.0 if tol is None else float(tol))
+    tols = _pair_tolerances(p, w, off, pr, given)
     rows: FloatArray = intersect_batch_kernel(p, w, off, pr, tols, int(budget))
     return rows
+
+
+def _pair_tolerances(p: FloatArray, w: FloatArray, off: NDArray[np.int64], pairs: NDArray[np.int64],
+                     tol: float | None) -> FloatArray:
+    """Each pair's :func:`~relief_cad.tolerances.resolve_tolerance` (curves built once each)."""
+    curves: dict[int, RationalBezier] = {}
+
+    def curve(k: int) -> RationalBezier:
+        if k not in curves:
+            curves[k] = RationalBezier(p[off[k]:off[k + 1]], w[off[k]:off[k + 1]])
+        return curves[k]
+
+    return np.array([resolve_tolerance(tol, curve(i), curve(j)) for i, j in pairs.tolist()])

@@ -33,6 +33,7 @@ only (so it is never hot), what they are:
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from fractions import Fraction
 from typing import Literal
@@ -262,6 +263,40 @@ def _fold(c: RationalBezier, t: float, u: float) -> float | None:
     return 0.5 * (lo + hi)
 
 
+# ---------------------------------------------------------------------------- range
+SAFE_EXPONENT = 100
+"""Coordinates of magnitude 2**-100 .. 2**100 are used as they are; others are scaled first.
+
+The geometry here (and the space kernel's Gauss-Newton step) forms squared distances and products
+of squared derivatives, which overflow beyond about 1e77 (or underflow below 1e-77). An exact
+power-of-two scaling into range changes no parameter and no digit of the points and distances
+brought back."""
+
+
+def range_exponent(big: float) -> int:
+    """0 when ``big`` (the largest |coordinate|) is in the safe range, else its binary exponent.
+
+    >>> range_exponent(1e10), range_exponent(1e300)
+    (0, 997)
+    """
+    exp = math.frexp(big)[1] if big > 0.0 else 0
+    return 0 if abs(exp) <= SAFE_EXPONENT else exp
+
+
+def _exponent_of(*curves: RationalBezier) -> int:
+    return range_exponent(max(float(np.max(np.abs(c.control_points))) for c in curves))
+
+
+def _scaled(c: RationalBezier, exp: int) -> RationalBezier:
+    return RationalBezier(np.ldexp(c.control_points, -exp), c.weights)
+
+
+def _rescaled(items: Sequence[Result], exp: int) -> list[Result]:
+    """Points and distances multiplied by ``2**exp`` (exact); overlaps carry parameters only."""
+    return [Intersection(r.t, r.u, np.ldexp(r.point, exp), r.kind, math.ldexp(r.distance, exp))
+            if isinstance(r, Intersection) else r for r in items]
+
+
 def refine_self(c: RationalBezier, items: Sequence[Result], tol: float) -> list[Result]:
     """Return the self-intersections of ``c`` with retraced stretches as one overlap each.
 
@@ -286,6 +321,9 @@ def refine_self(c: RationalBezier, items: Sequence[Result], tol: float) -> list[
     >>> refine_self(c, pts, 1e-9)
     [Overlap(t=(0.0, 0.5), u=(1.0, 0.5), kind='overlap')]
     """
+    exp = _exponent_of(c)
+    if exp:
+        return _rescaled(refine_self(_scaled(c, exp), _rescaled(items, -exp), math.ldexp(tol, -exp)), exp)
     pts = [r for r in items if isinstance(r, Intersection)]
     ovs = [r for r in items if isinstance(r, Overlap)]
     if not ((len(pts) >= 2 and any(p.kind == "tangent" for p in pts)) or (ovs and pts)):
@@ -517,6 +555,9 @@ def whole_overlap(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap |
     >>> whole_overlap(c, c.elevate(2), 1e-9)
     Overlap(t=(0.0, 1.0), u=(0.0, 1.0), kind='overlap')
     """
+    exp = _exponent_of(a, b)
+    if exp:
+        return whole_overlap(_scaled(a, exp), _scaled(b, exp), math.ldexp(tol, -exp))
     pa, pb = a.control_points, b.control_points
     if pa.shape[1] != pb.shape[1]:
         return None
@@ -575,6 +616,10 @@ def refine_contacts(a: RationalBezier, b: RationalBezier, items: Sequence[Result
     >>> refine_contacts(line, cubic, intersect(line, cubic), 1e-9)
     [Overlap(t=(0.0, 1.0), u=(0.0, 1.0), kind='overlap')]
     """
+    exp = _exponent_of(a, b)
+    if exp:
+        out = refine_contacts(_scaled(a, exp), _scaled(b, exp), _rescaled(items, -exp), math.ldexp(tol, -exp))
+        return _rescaled(out, exp)
     out = _overlaps(a, b, list(items), tol)
     pts = [r for r in out if isinstance(r, Intersection)]
     ovs = [r for r in out if isinstance(r, Overlap)]

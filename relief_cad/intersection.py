@@ -93,7 +93,7 @@ from .errors import (
 )
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
 from .space import intersect_space
-from .tolerances import default_tolerance, rounding_floor
+from .tolerances import default_tolerance, resolve_tolerance, rounding_floor
 
 __all__ = [
     "DEFAULT_BUDGET",
@@ -149,11 +149,10 @@ def _planar(pa: FloatArray, wa: FloatArray, pb: FloatArray, wb: FloatArray, tol:
 
 
 def _refined(a: RationalBezier, b: RationalBezier, res: IntersectionList, tol: float) -> IntersectionList:
-    """The kernel's result decided by :func:`relief_cad.contacts.refine_contacts` (``tol <= 0``: default)."""
+    """The kernel's result decided by :func:`relief_cad.contacts.refine_contacts`."""
     if not needs_refining(a, b, res):
         return res
-    ftol = default_tolerance(a, b) if tol <= 0.0 else tol
-    return IntersectionList(refine_contacts(a, b, res, ftol), res.unresolved)
+    return IntersectionList(refine_contacts(a, b, res, tol), res.unresolved)
 
 
 def _split_homogeneous(h: FloatArray, name: str) -> tuple[FloatArray, FloatArray]:
@@ -278,7 +277,11 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
         Distance tolerance in model units: a near-miss closer than ``tol`` is a
         tangent contact at the closest approach, a wider gap is no intersection.
         Default :func:`relief_cad.tolerances.default_tolerance` of both curves'
-        control points (``1e-9`` of their size plus rounding).
+        control points (``1e-9`` of their size plus rounding). A given ``tol`` is
+        raised to the rounding floor of the data and may be at most
+        :data:`~relief_cad.tolerances.MAX_TOLERANCE_FRACTION` (1e-2) of the curves'
+        size: within that cap the answer does not depend on the order of ``a``
+        and ``b`` (see :func:`relief_cad.tolerances.resolve_tolerance`).
     budget : int, optional
         Cap on clipping iterations (default :data:`DEFAULT_BUDGET`).
     on_budget : {"raise", "return"}
@@ -291,14 +294,15 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
     IntersectionList
         :class:`~relief_cad.Intersection` and :class:`~relief_cad.Overlap`
         objects sorted by ``t``. End point contacts have ``t``/``u`` exactly
-        ``0.0`` or ``1.0``.
+        ``0.0`` or ``1.0``. ``tol_used`` is the tolerance applied; every
+        point has ``distance <= tol_used``.
 
     Raises
     ------
     InputTypeError
         If ``a`` or ``b`` is not a :class:`~relief_cad.RationalBezier`.
     ToleranceError
-        If ``tol`` is not a finite distance > 0.
+        If ``tol`` is not a finite distance > 0, or exceeds the cap.
     BudgetExceededError
         If the budget runs out and ``on_budget="raise"``.
 
@@ -324,25 +328,28 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
         result: IntersectionList = intersect_space(a, b, tol=tol, budget=budget, on_budget=on_budget)
         return result
     if b is None:
-        given = check_tol(tol)
-        ftol = default_tolerance(a) if given is None else max(given, rounding_floor(a))
-        return finish(_self_planar(a.control_points, a.weights, ftol, nbudget), on_budget)
-    # tol <= 0 asks the kernel for default_tolerance(a, b); a given tol is raised to the data's
-    # rounding level (tolerances.rounding_floor)
-    given = check_tol(tol)
-    ftol = -1.0 if given is None else max(given, rounding_floor(a, b))
+        ftol = resolve_tolerance(check_tol(tol), a)
+        return finish(_with_tol(_self_planar(a.control_points, a.weights, ftol, nbudget), ftol), on_budget)
+    # the default, or the given tol raised to the data's rounding level (one rule: resolve_tolerance)
+    ftol = resolve_tolerance(check_tol(tol), a, b)
     pb = b.control_points
     x0 = pa.item(0)  # the first x decides for almost every pair (a scalar read costs 50 ns)
-    whole = whole_overlap(a, b, default_tolerance(a, b) if ftol <= 0.0 else ftol) if (
+    whole = whole_overlap(a, b, ftol) if (
         (x0 == pb.item(0) and np.array_equal(pa[0], pb[0]))
         or (x0 == pb.item(-2) and np.array_equal(pa[0], pb[-1]))) else None
     if whole is not None:  # coincident curves: the clipping's slowest case, decided by geometry
-        return IntersectionList([whole])
+        return IntersectionList([whole], tol_used=ftol)
     # a RationalBezier's arrays are float64: the kernel takes them as they are (strided views too)
-    res = _rows_to_list(intersect_one_kernel(pa, a.weights, pb, b.weights, ftol, nbudget))
+    res = _with_tol(_rows_to_list(intersect_one_kernel(pa, a.weights, pb, b.weights, ftol, nbudget)), ftol)
     if not res and not res.unresolved:
         return res
-    return finish(_refined(a, b, res, ftol), on_budget)
+    return finish(_with_tol(_refined(a, b, res, ftol), ftol), on_budget)
+
+
+def _with_tol(res: IntersectionList, tol: float) -> IntersectionList:
+    """``res`` with :attr:`~relief_cad.IntersectionList.tol_used` set to ``tol``."""
+    res.tol_used = tol
+    return res
 
 
 def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
@@ -357,7 +364,8 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     point, direction : array_like, shape (2,)
         A point of the line and its (nonzero) direction.
     tol : float, optional
-        Distance tolerance (default from the curve's control points and ``point``).
+        Distance tolerance (default from the curve's control points and ``point``);
+        raised to the rounding floor, capped by the curve's size as in :func:`intersect`.
     budget, on_budget
         As for :func:`intersect`.
 
@@ -398,7 +406,7 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     check_on_budget(on_budget)
     nbudget = check_budget(budget)
     pts = curve.control_points
-    ftol = check_tol(tol) or default_tolerance(curve, p[None, :])
+    given = check_tol(tol)
     s = (pts - p) @ d / dd
     lo = float(min(s.min(), 0.0))
     hi = float(max(s.max(), 0.0))
@@ -406,6 +414,10 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     lo -= pad
     hi += pad
     seg = np.array([p + lo * d, p + hi * d])
+    # the default (curve and point), or the given tol checked against the curve; both raised to the
+    # rounding floor of the segment that stands for the line
+    ftol = max(default_tolerance(curve, p[None, :]) if given is None else resolve_tolerance(given, curve),
+               rounding_floor(curve, RationalBezier(seg)))
     res = _planar(pts, curve.weights, seg, np.ones(2), ftol, nbudget)
     items: list[Result] = []
     for r in res:
@@ -413,7 +425,7 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
             pt = curve.evaluate(r.t) if r.kind == "crossing" else r.point
             su = float((np.asarray(pt) - p) @ d / dd)
             items.append(Intersection(r.t, su, r.point, r.kind, r.distance))
-    return finish(IntersectionList(items, res.unresolved), on_budget)
+    return finish(IntersectionList(items, res.unresolved, ftol), on_budget)
 
 
 def _collect(res: FloatArray, points: FloatArray, out_items: list[list[Result]],
@@ -469,6 +481,7 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
         The pairs.
     tol : float, optional
         One tolerance for every pair; default: each pair's own default tolerance.
+        Resolved per pair as in :func:`intersect` (floor and cap; each list's ``tol_used``).
     budget, on_budget
         As for :func:`intersect` (the budget is per pair).
     workers : int, optional
@@ -532,8 +545,7 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
         pts.flags.writeable = False
         wts.flags.writeable = False
         idx = np.arange(2 * len(planar), dtype=np.int64).reshape(-1, 2)
-        # a tolerance <= 0 asks the kernel for the pair's default_tolerance
-        tols = np.full(len(planar), -1.0 if ftol is None else ftol)
+        tols = np.array([resolve_tolerance(ftol, *plist[k]) for k in planar])
         res = _batch_rows(pts, wts, offsets, idx, tols, nbudget, nworkers)
         out_items: list[list[Result]] = [[] for _ in planar]
         out_boxes: list[list[ParameterBox]] = [[] for _ in planar]
@@ -552,6 +564,6 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
             if len(items) > 1:
                 items.sort(key=lambda x: x.t[0] if isinstance(x, Overlap) else x.t)
             boxes = out_boxes[j]
-            out[k] = (IntersectionList(items) if not boxes
-                      else finish(IntersectionList(items, boxes), on_budget))
+            out[k] = (IntersectionList(items, (), float(tols[j])) if not boxes
+                      else finish(IntersectionList(items, boxes, float(tols[j])), on_budget))
     return [o if o is not None else IntersectionList() for o in out]

@@ -14,6 +14,7 @@ True
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Literal, Union
@@ -131,20 +132,32 @@ class ParameterBox:
 class IntersectionList(list[Result]):
     """The results of an intersection, sorted by ``t``, plus what was left unresolved.
 
-    A plain ``list`` of :class:`Intersection` and :class:`Overlap` objects with one
-    extra attribute, :attr:`unresolved`: the parameter boxes a budget left open
-    (empty when the answer is complete).
+    A plain ``list`` of :class:`Intersection` and :class:`Overlap` objects with two
+    extra attributes: :attr:`unresolved`, the parameter boxes a budget left open
+    (empty when the answer is complete), and :attr:`tol_used`, the distance tolerance
+    (model units) the intersector actually used: the given ``tol`` raised to the
+    rounding floor of the data, or the default (:func:`relief_cad.tolerances.resolve_tolerance`).
+    Every :class:`Intersection` in the list has ``distance <= tol_used``; ``nan`` for a
+    list built by hand.
 
     >>> IntersectionList([]).complete
     True
+    >>> from relief_cad import RationalBezier, intersect
+    >>> res = intersect(RationalBezier([[-2, 0.3], [2, -0.2]]), RationalBezier([[0.1, -2], [0.2, 2]]),
+    ...                 tol=1e-300)   # far below the rounding of the data: raised to it
+    >>> len(res), res.tol_used > 1e-300, res[0].distance <= res.tol_used
+    (1, True, True)
     """
 
-    __slots__ = ("unresolved",)
+    __slots__ = ("unresolved", "tol_used")
     unresolved: tuple[ParameterBox, ...]
+    tol_used: float
 
-    def __init__(self, items: Iterable[Result] = (), unresolved: Iterable[ParameterBox] = ()) -> None:
+    def __init__(self, items: Iterable[Result] = (), unresolved: Iterable[ParameterBox] = (),
+                 tol_used: float = math.nan) -> None:
         list.__init__(self, items)
         self.unresolved = unresolved if type(unresolved) is tuple else tuple(unresolved)
+        self.tol_used = tol_used
 
     @property
     def complete(self) -> bool:

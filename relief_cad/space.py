@@ -37,6 +37,7 @@ runs with that widened tolerance and no space near-miss closer than ``tol`` is l
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 from typing import Literal
 
@@ -52,12 +53,12 @@ from ._kernels import (
     space_pair_kernel,
 )
 from ._types import FloatArray
-from .contacts import needs_refining, refine_contacts, refine_self
+from .contacts import needs_refining, range_exponent, refine_contacts, refine_self
 from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError
 from .relief import ReliefPerspective, central_projection
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
-from .tolerances import default_tolerance, is_point_like, rounding_floor
+from .tolerances import is_point_like, resolve_tolerance
 
 __all__ = ["ReliefFrame", "ReliefScheme", "intersect_space", "relief_scheme"]
 
@@ -127,16 +128,22 @@ _FRAME_NAMES = ("model", "least-variance axis", "tilted view", "fixed oblique vi
 
 
 def _first_frame(points: FloatArray) -> ReliefFrame:
-    """The frame the kernel tries first for these control points (model coordinates)."""
-    ref = points[0].copy()
-    local = np.ascontiguousarray(points - ref)
+    """The frame the kernel tries first for these control points (model coordinates).
+
+    Out of the safe range (:func:`relief_cad.contacts.range_exponent`) the points are scaled by a
+    power of two first, exactly as :func:`_pair` scales them for the kernel.
+    """
+    exp = range_exponent(float(np.max(np.abs(points))))
+    ref = np.ldexp(points[0], -exp)
+    local = np.ascontiguousarray(np.ldexp(points, -exp) - ref)
     m = np.empty((4, 4))
     for mode, name in enumerate(_FRAME_NAMES):
         scale = float(_space_frame(mode, local, ref, m))
         if scale > 0.0:
             shift = np.eye(4)
             shift[:3, 3] = -ref
-            return ReliefFrame(matrix=m @ shift, scale=scale, name=name)
+            shrink = np.diag([math.ldexp(1.0, -exp)] * 3 + [1.0])
+            return ReliefFrame(matrix=m @ shift @ shrink, scale=math.ldexp(scale, exp), name=name)
     raise AssertionError("unreachable: the oblique frames always exist")  # pragma: no cover
 
 
@@ -161,9 +168,12 @@ def relief_scheme(
         The frame; by default the first admissible one (the model's own when every control point
         has ``z > 0``, as for the paper's curves).
     k : float, default 2.0
-        Span of the relief perspective ``φ``.
+        Span of the relief perspective ``φ`` (a real number > 0 and != 1: else
+        :class:`~relief_cad.errors.SpanError` / :class:`~relief_cad.errors.InputTypeError`). It shapes
+        the reliefs ``a_relief``, ``b_relief``; the images ``ψ(φ(a))`` are the same for every ``k``.
     tol : float, optional
-        Space tolerance (model units) from which the planar one is derived.
+        Space tolerance (model units) from which the planar one is derived; resolved as in
+        :func:`intersect_space` (:func:`relief_cad.tolerances.resolve_tolerance`).
 
     Returns
     -------
@@ -182,7 +192,7 @@ def relief_scheme(
     pts = np.vstack([a3.control_points, b3.control_points])
     if frame is None:
         frame = _first_frame(pts)
-    t = default_tolerance(a3, b3) if tol is None else float(tol)
+    t = resolve_tolerance(check_tol(tol), a3, b3)
     a_f = a3.transformed(frame.matrix)
     b_f = b3.transformed(frame.matrix)
     phi = ReliefPerspective(k)
@@ -216,8 +226,27 @@ def _rows_to_results(rows: FloatArray) -> tuple[list[Result], list[ParameterBox]
     return items, boxes
 
 
-def _pair(ha: FloatArray, hb: FloatArray, tol: float, budget: int, k: float) -> FloatArray:
-    rows, n, status = space_pair_kernel(ha, hb, tol, budget, k)
+def _pair(ha: FloatArray, hb: FloatArray, tol: float, budget: int) -> FloatArray:
+    """The space kernel on one pair (homogeneous rows), scaled by a power of two when needed.
+
+    Out of the safe range of :data:`relief_cad.contacts.SAFE_EXPONENT` the kernel's Gauss-Newton
+    step (products of squared derivatives) would overflow.
+    """
+    exp = range_exponent(max(float(np.max(np.abs(ha[:, :3]))), float(np.max(np.abs(hb[:, :3])))))
+    if not exp:
+        return _pair_in_range(ha, hb, tol, budget)
+    ha = ha.copy()
+    hb = hb.copy()
+    ha[:, :3] = np.ldexp(ha[:, :3], -exp)
+    hb[:, :3] = np.ldexp(hb[:, :3], -exp)
+    rows: FloatArray = _pair_in_range(ha, hb, math.ldexp(tol, -exp), budget).copy()
+    rows[:, 5:9] = np.ldexp(rows[:, 5:9], exp)  # the point and the distance, back in model units
+    return rows
+
+
+def _pair_in_range(ha: FloatArray, hb: FloatArray, tol: float, budget: int) -> FloatArray:
+    # ψ∘φ = ψ: the span of the relief changes nothing (see intersect_space); the kernel takes 2
+    rows, n, status = space_pair_kernel(ha, hb, tol, budget, 2.0)
     if status == STATUS_ARTEFACT:
         raise BudgetExceededError(
             "every projection frame showed an overlap of the projected curves that is not an overlap "
@@ -230,12 +259,14 @@ def _pair(ha: FloatArray, hb: FloatArray, tol: float, budget: int, k: float) -> 
 
 def _monotone(points: FloatArray) -> bool:
     """True when every leg of the control polygon advances along the chord: no self-intersection."""
-    legs = np.diff(points, axis=0)
-    chord = points[-1] - points[0]
+    big = float(np.max(np.abs(points)))
+    unit = points / big if big > 0.0 else points  # scaled: no overflow for coordinates up to 1e308
+    legs = np.diff(unit, axis=0)
+    chord = unit[-1] - unit[0]
     return bool(np.all(legs @ chord > 0.0))
 
 
-def _self_rows(curve: RationalBezier, tol: float, budget: int, k: float) -> FloatArray:
+def _self_rows(curve: RationalBezier, tol: float, budget: int) -> FloatArray:
     """Self-intersections: split into monotone pieces, intersect every pair of pieces."""
     if is_point_like(curve, tol):
         return np.empty((0, SPACE_COLS))  # a point has no self-intersection
@@ -255,7 +286,7 @@ def _self_rows(curve: RationalBezier, tol: float, budget: int, k: float) -> Floa
     for i, (a0, a1, pa) in enumerate(pieces):
         for j in range(i + 1, len(pieces)):
             b0, b1, pb = pieces[j]
-            found = _pair(pa.homogeneous, pb.homogeneous, tol, budget, k)
+            found = _pair(pa.homogeneous, pb.homogeneous, tol, budget)
             for r in found:
                 r = r.copy()
                 if j == i + 1 and r[1] == 1.0 and r[2] == 0.0:
@@ -285,7 +316,7 @@ def intersect_space(
     tol: float | None = None,
     budget: int | None = None,
     on_budget: Literal["raise", "return"] = "raise",
-    k: float = 2.0,
+    k: float | None = None,
 ) -> IntersectionList:
     """Intersect space rational Bézier curves by the relief-perspective scheme.
 
@@ -304,19 +335,29 @@ def intersect_space(
     on_budget : {"raise", "return"}
         What to do when a budget runs out: raise :class:`BudgetExceededError`, or return the
         results with :attr:`IntersectionList.unresolved` filled.
-    k : float, default 2.0
-        Span of the relief perspective used.
+    k : float, optional
+        Deprecated, and without effect on the result: accepted for compatibility, checked like
+        every span (a real number > 0 and != 1; else :class:`~relief_cad.errors.SpanError` or
+        :class:`~relief_cad.errors.InputTypeError`) and answered with a ``DeprecationWarning``.
+        The relief ``φ_k`` fixes every line through the centre, so ``ψ ∘ φ_k = ψ`` for every
+        ``k``: the planar images that are clipped, hence the intersections, are the same for
+        every span (in binary64 the factors ``1 + k`` moved parameters by a few ulps, 4e-16
+        measured, so the kernel always runs with one span and the results are bit-identical
+        whatever ``k`` is passed). The span shapes only the reliefs themselves; see
+        :func:`relief_scheme`, where ``k`` is a real parameter.
 
     Returns
     -------
     IntersectionList
         Sorted by ``t``: :class:`Intersection` (``kind`` from the angle of the space tangents)
-        and :class:`Overlap` results, parameters in ``[0, 1]`` of each curve.
+        and :class:`Overlap` results, parameters in ``[0, 1]`` of each curve; ``tol_used`` is
+        the tolerance applied (:func:`relief_cad.tolerances.resolve_tolerance`).
 
     Raises
     ------
     InputTypeError, ToleranceError
-        For inputs of the wrong type or a tolerance that is not a positive distance.
+        For inputs of the wrong type, a tolerance that is not a positive distance, or one above
+        :data:`relief_cad.tolerances.MAX_TOLERANCE_FRACTION` of the curves' size.
     BudgetExceededError
         If a budget runs out (``on_budget="raise"``), or no frame gives a projection free of
         artefacts.
@@ -324,12 +365,13 @@ def intersect_space(
     Examples
     --------
     >>> from relief_cad import RationalBezier
-    >>> skew_a = RationalBezier([[0, 0, 0], [1, 0, 0]])
-    >>> skew_b = RationalBezier([[0.5, -1, 1], [0.5, 1, 1]])
+    >>> skew_a = RationalBezier([[0, 0, 0], [100, 0, 0]])
+    >>> skew_b = RationalBezier([[50, -100, 1], [50, 100, 1]])
     >>> len(intersect_space(skew_a, skew_b))   # their projections along z cross; they do not meet
     0
-    >>> intersect_space(skew_a, skew_b, tol=1.01)[0].kind   # a near-miss within tol is a contact
-    'tangent'
+    >>> near = intersect_space(skew_a, skew_b, tol=1.01)   # a near-miss within tol is a contact
+    >>> near[0].kind, near[0].distance <= near.tol_used == 1.01
+    ('tangent', True)
     """
     if not isinstance(a, RationalBezier) or not (b is None or isinstance(b, RationalBezier)):
         raise InputTypeError(
@@ -337,21 +379,32 @@ def intersect_space(
             f"{type(a).__name__} and {type(b).__name__}"
         )
     a3 = a if a.dim == 3 else a.embedded(3)
-    k = check_span(k)
+    if k is not None:
+        _deprecated_span(k)
     check_on_budget(on_budget)
     nbudget = check_budget(budget)
-    ftol = check_tol(tol)
-    if ftol is not None:  # a given tol is raised to the data's rounding level
-        ftol = max(ftol, rounding_floor(a3) if b is None else rounding_floor(a3, b))
+    given = check_tol(tol)
     if b is None:
-        tol_s = default_tolerance(a3) if ftol is None else ftol
-        items, boxes = _rows_to_results(_self_rows(a3, tol_s, nbudget, k))
+        tol_s = resolve_tolerance(given, a3)
+        items, boxes = _rows_to_results(_self_rows(a3, tol_s, nbudget))
         items = refine_self(a3, items, tol_s)
     else:
         b3 = b if b.dim == 3 else b.embedded(3)
-        tol_v = -1.0 if ftol is None else ftol  # -1: kernel default
-        items, boxes = _rows_to_results(_pair(a3.homogeneous, b3.homogeneous, tol_v, nbudget, k))
+        tol_s = resolve_tolerance(given, a3, b3)
+        items, boxes = _rows_to_results(_pair(a3.homogeneous, b3.homogeneous, tol_s, nbudget))
         if needs_refining(a3, b3, items):
-            items = refine_contacts(a3, b3, items, default_tolerance(a3, b3) if tol_v <= 0.0 else tol_v)
+            items = refine_contacts(a3, b3, items, tol_s)
     items.sort(key=lambda r: r.t if isinstance(r, Intersection) else r.t[0])
-    return finish(IntersectionList(items, boxes), on_budget)
+    return finish(IntersectionList(items, boxes, tol_s), on_budget)
+
+
+def _deprecated_span(k: object) -> None:
+    """Check a ``k`` given to :func:`intersect_space` and warn that it has no effect."""
+    check_span(k)
+    warnings.warn(
+        "intersect_space(k=...) has no effect and is deprecated: the relief fixes every line through "
+        "the centre (psi o phi_k = psi), so the intersections are the same for every span k; "
+        "k shapes only the reliefs of relief_scheme()",
+        DeprecationWarning,
+        stacklevel=3,
+    )

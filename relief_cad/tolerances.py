@@ -36,12 +36,16 @@ if TYPE_CHECKING:
     from .curves import RationalBezier
 
 __all__ = [
+    "MAX_TOLERANCE_FRACTION",
+    "ModelTolerance",
     "PARAMETER_TOLERANCE",
     "RELATIVE_TOLERANCE",
     "ROUNDING_ULPS",
     "default_tolerance",
     "is_point_like",
+    "resolve_tolerance",
     "rounding_floor",
+    "size_of",
 ]
 
 RELATIVE_TOLERANCE: float = 1e-9
@@ -52,6 +56,17 @@ ROUNDING_ULPS: float = 64.0
 
 PARAMETER_TOLERANCE: float = 1e-15
 """Parameter-space resolution below which two parameters are the same (dimensionless)."""
+
+MAX_TOLERANCE_FRACTION: float = 1e-2
+"""Largest accepted tolerance as a fraction of the inputs' size (:func:`size_of`).
+
+A tolerance is the distance below which two points are the same point. Once it is a sizeable
+fraction of the curves, whole stretches of them lie within it of each other, the contacts it
+defines are no longer isolated, and which ones come out depends on the order of the arguments
+(measured on 150 random cubic/quadratic pairs: asymmetric answers for ``intersect(a, b)`` and
+``intersect(b, a)`` from 5 % of the size in the plane and in space, none up to 2 %). So a larger
+tolerance is refused with :class:`~relief_cad.errors.ToleranceError` instead of answered.
+"""
 
 _EPS = float(np.finfo(np.float64).eps)
 
@@ -125,6 +140,101 @@ def _tolerance_of(extents: list[FloatArray], coords: list[FloatArray]) -> float:
     return tol
 
 
+def size_of(*curves: RationalBezier | FloatArray) -> float:
+    """The diagonal of the joint bounding box of the curves' control points (model units).
+
+    A plain ``(m, d)`` array counts as its points (as in :func:`default_tolerance`).
+
+    Computed on coordinates scaled by the largest one, so it does not overflow up to the float
+    range.
+
+    >>> from relief_cad import RationalBezier
+    >>> size_of(RationalBezier([[0.0, 0.0], [3.0, 4.0]]), RationalBezier([[1e300, 0.0], [0.0, 0.0]]))
+    1e+300
+    """
+    return _extent(curves)[0]
+
+
+def _extent(items: tuple[RationalBezier | FloatArray, ...]) -> tuple[float, float]:
+    """``(size, max |x|)`` of the control points: one min and one max per input (cheap: hot path).
+
+    Inputs of fewer dimensions count as lying in ``x_d = 0`` (as :meth:`RationalBezier.embedded`).
+    """
+    los: list[list[float]] = []
+    his: list[list[float]] = []
+    for item in items:
+        pts = _points_of(item)
+        los.append(pts.min(axis=0).tolist())
+        his.append(pts.max(axis=0).tolist())
+    dim = max(len(lo) for lo in los)
+    lo = [min(v[j] if j < len(v) else 0.0 for v in los) for j in range(dim)]
+    hi = [max(v[j] if j < len(v) else 0.0 for v in his) for j in range(dim)]
+    big = max(max(-x for x in lo), max(hi))
+    if big == 0.0:
+        return 0.0, 0.0
+    return math.hypot(*((h - low) / big for h, low in zip(hi, lo, strict=True))) * big, big
+
+
+def _points_of(item: RationalBezier | FloatArray) -> FloatArray:
+    """The control points of a curve, or an array of points as it is (already checked)."""
+    if isinstance(item, np.ndarray):
+        return item
+    return item.control_points
+
+
+class ModelTolerance(float):
+    """A tolerance already resolved, and capped, for a whole model (the CAD layer's edges together).
+
+    The CAD layer checks its ``tol`` against the size of all the edges taking part, then intersects
+    their Bézier segments pair by pair; a sliver segment may be far smaller than that tolerance
+    without making it meaningless for the model. Passed as ``tol``, a ``ModelTolerance`` is
+    therefore not capped again per pair by :func:`resolve_tolerance` (it is still raised to the
+    rounding floor).
+
+    >>> from relief_cad import RationalBezier
+    >>> resolve_tolerance(ModelTolerance(1e-7), RationalBezier([[0.0, 0.0], [1e-8, 0.0]]))
+    1e-07
+    """
+
+
+def resolve_tolerance(tol: float | None, *curves: RationalBezier | FloatArray) -> float:
+    """The tolerance actually used for these curves (model units): what results report as ``tol_used``.
+
+    ``None`` gives :func:`default_tolerance` of the curves; a given ``tol`` (already checked by
+    :func:`relief_cad._checks.check_tol`) is raised to :func:`rounding_floor`. A ``tol`` above
+    :data:`MAX_TOLERANCE_FRACTION` of :func:`size_of` the curves (and above the rounding floor) is
+    refused, unless the curves are a single point, where there is nothing to confuse, or ``tol`` is a
+    :class:`ModelTolerance`.
+
+    Raises
+    ------
+    ToleranceError
+        If ``tol`` exceeds ``MAX_TOLERANCE_FRACTION * size_of(*curves)``.
+
+    Examples
+    --------
+    >>> from relief_cad import RationalBezier
+    >>> line = RationalBezier([[0.0, 0.0], [3.0, 4.0]])
+    >>> resolve_tolerance(1e-300, line) == rounding_floor(line)
+    True
+    >>> resolve_tolerance(1.0, line)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ToleranceError: tol should be at most 0.01 of the inputs' size (that is 0.05), not 1.0
+    """
+    if tol is None:
+        return default_tolerance(*curves)
+    size, big = _extent(curves)
+    floor = _floor(big)
+    limit = MAX_TOLERANCE_FRACTION * size
+    if tol > max(limit, floor) and size > 0.0 and not isinstance(tol, ModelTolerance):
+        from .errors import ToleranceError
+
+        raise ToleranceError(f"tol should be at most {MAX_TOLERANCE_FRACTION:g} of the inputs' size "
+                             f"(that is {limit:.6g}), not {tol!r}")
+    return max(tol, floor)
+
+
 def is_point_like(curve: RationalBezier, tol: float) -> bool:
     """True when every control point lies within ``tol`` of the first one (model units).
 
@@ -140,7 +250,7 @@ def is_point_like(curve: RationalBezier, tol: float) -> bool:
     return bool(np.max(np.abs(pts - pts[0])) <= tol)
 
 
-def rounding_floor(*curves: RationalBezier) -> float:
+def rounding_floor(*curves: RationalBezier | FloatArray) -> float:
     """The rounding level of the data: ``ROUNDING_ULPS * eps * max |x|`` over all control points.
 
     Every tolerance (given or default) is raised to at least this distance, because points
@@ -151,5 +261,8 @@ def rounding_floor(*curves: RationalBezier) -> float:
     >>> rounding_floor(RationalBezier([[0.0, 0.0], [1.0, 2.0]])) == ROUNDING_ULPS * _EPS * 2.0
     True
     """
-    big = max(float(np.max(np.abs(c.control_points))) for c in curves)
+    return _floor(_extent(curves)[1])
+
+
+def _floor(big: float) -> float:
     return max(ROUNDING_ULPS * _EPS * big, 1e-300)

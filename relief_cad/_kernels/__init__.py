@@ -112,7 +112,6 @@ COMPILED: bool = _load()
 """True when the compiled kernels run; False under ``RELIEF_CAD_PURE=1``."""
 
 from .batch import intersect_batch_kernel, intersect_one_kernel  # noqa: E402
-from .bezier import _default_tol  # noqa: E402,F401
 from .clip import clip_range_kernel, fat_line_kernel, hull_range_kernel  # noqa: E402
 from .constants import (  # noqa: E402
     KIND_CROSSING,

@@ -1,7 +1,7 @@
-"""Homogeneous Bézier curves: de Casteljau evaluation and subdivision, boxes, frame, tolerance.
+"""Homogeneous Bézier curves: de Casteljau evaluation and subdivision, boxes, frame.
 
-Rational Bézier curves in homogeneous form (the paper's §2); the exact joint frame of a pair and
-the default tolerance of :mod:`relief_cad.tolerances`.
+Rational Bézier curves in homogeneous form (the paper's §2) and the exact joint frame of a pair.
+The tolerance is always given by the caller (:func:`relief_cad.tolerances.resolve_tolerance`).
 
 Compiled by Cython (pure-Python mode) when the package is built; see :mod:`relief_cad._kernels`.
 """
@@ -12,9 +12,6 @@ import math
 
 import cython
 import numpy as np
-from cython.cimports.libc.math import sqrt
-
-from .constants import _EPS
 
 
 def _grow(arr, n):
@@ -182,70 +179,6 @@ def _bbox_update(P: cython.const[cython.double][:, :], box: cython.double[:]):
         box[2] = min(box[2], y)
         box[3] = max(box[3], y)
         box[4] = max(box[4], abs(x), abs(y))
-
-
-def _curve_box_update(
-    P: cython.const[cython.double][:, :], W: cython.const[cython.double][:], box: cython.double[:]
-):
-    """Grow ``box`` (per coordinate ``[lo, hi]`` pairs) by samples of the curve itself.
-
-    The curve is sampled at ``2 (n + 1) + 1`` uniform parameters by homogeneous de
-    Casteljau: the curve's own extent, not its control polygon's (which can be far
-    larger for ill-conditioned curves).
-    """
-    m = P.shape[0]
-    d = P.shape[1]
-    ns = 2 * m + 1
-    wk: cython.double[:, :] = np.empty((m, d + 1))
-    for k in range(ns):
-        t = k / (ns - 1.0)
-        s = 1.0 - t
-        for i in range(m):
-            for j in range(d):
-                wk[i, j] = W[i] * P[i, j]
-            wk[i, d] = W[i]
-        for r in range(1, m):
-            for i in range(m - r):
-                for j in range(d + 1):
-                    wk[i, j] = s * wk[i, j] + t * wk[i + 1, j]
-        for j in range(d):
-            x = wk[0, j] / wk[0, d]
-            box[2 * j] = min(box[2 * j], x)
-            box[2 * j + 1] = max(box[2 * j + 1], x)
-
-
-def _default_tol(
-    PA: cython.const[cython.double][:, :],
-    WA: cython.const[cython.double][:],
-    PB: cython.const[cython.double][:, :],
-    WB: cython.const[cython.double][:],
-):
-    """:func:`relief_cad.tolerances.default_tolerance` of both curves (2-D or 3-D).
-
-    ``1e-9`` times the diagonal of the curves' joint extent (sampled) plus ``64 eps``
-    times the largest control-point coordinate (the rounding level of the data).
-    """
-    d = PA.shape[1]
-    box: cython.double[:] = np.empty(2 * d)
-    for j in range(d):
-        box[2 * j] = math.inf
-        box[2 * j + 1] = -math.inf
-    _curve_box_update(PA, WA, box)
-    _curve_box_update(PB, WB, box)
-    big = 0.0
-    for i in range(PA.shape[0]):
-        for j in range(d):
-            big = max(big, abs(PA[i, j]))
-    for i in range(PB.shape[0]):
-        for j in range(d):
-            big = max(big, abs(PB[i, j]))
-    diag = 0.0
-    for j in range(d):
-        diag += (box[2 * j + 1] - box[2 * j]) ** 2
-    tol = 1e-9 * sqrt(diag) + 64.0 * _EPS * big
-    if not (tol > 0.0 and tol < math.inf):
-        return 1e-300
-    return tol
 
 
 def _homog(

@@ -14,7 +14,7 @@ import cython
 import numpy as np
 from cython.cimports.libc.math import hypot
 
-from .bezier import _cartesian, _default_tol, _eval, _frame, _grow, _homog, _segment
+from .bezier import _cartesian, _eval, _frame, _grow, _homog, _segment
 from .certify import _polish_dd
 from .clip import clip_range_kernel, fat_line_kernel
 from .constants import _EPS, _ROUND, _SPLIT_RATIO, KIND_CROSSING, KIND_OVERLAP, KIND_TANGENT, KIND_UNRESOLVED
@@ -69,15 +69,14 @@ def intersect_pair_kernel(
     """Intersect two planar rational Bézier curves; append result rows to ``res``.
 
     Parameters are the Cartesian control points and weights of each curve, the
-    distance tolerance (model units), the iteration budget, the pair index written
-    in column 0, and the result array with its row count. Returns ``(res, nres)``.
+    distance tolerance (model units, > 0, resolved by the caller), the iteration
+    budget, the pair index written in column 0, and the result array with its row
+    count. Returns ``(res, nres)``.
     """
     ma = PA.shape[0]
     mb = PB.shape[0]
     na = ma - 1
     nb = mb - 1
-    if not tol > 0.0:
-        tol = _default_tol(PA, WA, PB, WB)
     # disjoint bounding boxes (widened by tol): nothing to do
     xla = xha = PA[0, 0]
     yla = yha = PA[0, 1]

@@ -14,7 +14,6 @@ import cython
 import numpy as np
 from cython.cimports.libc.math import sqrt
 
-from .bezier import _default_tol
 from .constants import (
     _EPS,
     _SPACE_N_FRAMES,
@@ -506,7 +505,7 @@ def space_pair_kernel(HA0, HB0, tol, budget, k):
     """Intersect two space rational curves by the relief scheme.
 
     ``HA0``, ``HB0``: homogeneous rows ``(w x, w y, w z, w)`` in model coordinates; ``tol`` a
-    distance in model units (``<= 0`` asks for the default tolerance of both curves); ``budget``
+    distance in model units (> 0: resolved by the caller, relief_cad.tolerances); ``budget``
     the planar clipping budget; ``k`` the span of the relief perspective. Returns ``(rows, nrows, status)``.
     """
     na = HA0.shape[0]
@@ -520,8 +519,6 @@ def space_pair_kernel(HA0, HB0, tol, budget, k):
         for j in range(3):
             PB[i, j] = HB0[i, j] / HB0[i, 3]
     big0 = max(np.abs(PA).max(), np.abs(PB).max())
-    PA0 = PA.copy()
-    PB0 = PB.copy()
     ref = PA[0].copy()
     # local coordinates: an exact shift for nearby values (Sterbenz), parameters unchanged
     HA = np.empty((na, 4))
@@ -540,9 +537,6 @@ def space_pair_kernel(HA0, HB0, tol, budget, k):
     allp[:na] = PA
     allp[na:] = PB
     big = np.abs(allp).max()
-    if not (tol > 0.0):
-        # relief_cad.tolerances.default_tolerance of both curves (their own sampled extent)
-        tol = _default_tol(PA0, HA0[:, 3].copy(), PB0, HB0[:, 3].copy())
     meet = max(1e3 * _EPS * big, 16.0 * _EPS * big0, 1e-3 * tol)
     out = np.empty((8, SPACE_COLS))
     if _space_separated(HA, HB, tol, 5):

@@ -40,7 +40,7 @@ from .compare import (
 )
 from .occt import occt_intersections
 from .ocp import Segment, edges_of
-from .results import EdgeIntersection, EdgeOverlap, EdgeResult
+from .results import EdgeIntersection, EdgeOverlap, EdgeResult, EdgeResultList
 
 __all__ = [
     "Comparison",
@@ -55,6 +55,7 @@ __all__ = [
     "EdgeIntersection",
     "EdgeOverlap",
     "EdgeResult",
+    "EdgeResultList",
     "Segment",
     "edges_of",
     "intersect",

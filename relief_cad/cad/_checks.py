@@ -15,8 +15,9 @@ from __future__ import annotations
 from typing import Any
 
 from .._checks import check_tol as _core_check_tol
+from ..tolerances import ModelTolerance, resolve_tolerance
 
-__all__ = ["check_tol"]
+__all__ = ["check_model_tol", "check_tol"]
 
 
 def check_tol(tol: Any, name: str = "tol") -> float:
@@ -50,3 +51,43 @@ def _not_none(name: str) -> Exception:
     from ..errors import ToleranceTypeError
 
     return ToleranceTypeError(f"{name} should be a distance > 0 in model units (a float), not NoneType")
+
+
+def check_model_tol(tol: Any, edges: list[Any]) -> ModelTolerance:
+    """Return a given ``tol`` checked against the size of these edges, as a :class:`ModelTolerance`.
+
+    One rule for :func:`~relief_cad.cad.intersect`, :func:`~relief_cad.cad.split`,
+    :func:`~relief_cad.cad.occt_intersections` and :func:`~relief_cad.cad.compare`: ``tol``
+    is refused above :data:`relief_cad.tolerances.MAX_TOLERANCE_FRACTION` of the diagonal of the
+    edges' joint OCCT bounding box, and raised to the rounding floor of its corners (as in the
+    core, :func:`relief_cad.tolerances.resolve_tolerance`).
+
+    Raises
+    ------
+    ToleranceError
+        If ``tol`` is not a finite distance > 0, or exceeds that fraction of the edges' size.
+
+    Examples
+    --------
+    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+    >>> from OCP.gp import gp_Pnt
+    >>> edge = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0)).Edge()
+    >>> check_model_tol(1e-7, [edge])
+    1e-07
+    >>> check_model_tol(1e300, [edge])
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ToleranceError: tol should be at most 0.01 of the inputs' size (...), not 1e+300
+    """
+    import numpy as np
+    from OCP.Bnd import Bnd_Box
+    from OCP.BRepBndLib import BRepBndLib
+
+    from ._compat import box_corners
+
+    value = check_tol(tol)
+    box = Bnd_Box()
+    for edge in edges:
+        BRepBndLib.Add_s(edge, box, False)
+    corners = np.array(box_corners(box), dtype=float).reshape(2, 3)
+    return ModelTolerance(resolve_tolerance(value, corners))

@@ -50,11 +50,11 @@ from ..curves import RationalBezier
 from ..errors import InvalidInputError
 from ..intersection import DEFAULT_BUDGET
 from ..results import Intersection, Overlap
-from ..tolerances import default_tolerance
+from ..tolerances import ModelTolerance, default_tolerance, rounding_floor
 from . import ocp
-from ._checks import check_tol
+from ._checks import check_model_tol, check_tol
 from .flavour import flavour_of, wrap_edge, wrap_edges, wrap_vertices
-from .results import EdgeIntersection, EdgeOverlap, EdgeResult
+from .results import EdgeIntersection, EdgeOverlap, EdgeResultList
 from .topology import usable_edges
 
 __all__ = ["intersect", "intersections", "planar_curves", "segments", "split"]
@@ -667,13 +667,17 @@ def _close_edge_pairs(infos_a: list[_EdgeInfo], infos_b: list[_EdgeInfo], tol: f
 
 
 def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float, list[_EdgeInfo]]:
-    given_tol = None if tol is None else check_tol(tol)
+    if tol is not None:
+        check_tol(tol)  # the type and sign first, before the shapes are read
     flavour = flavour_of(a)
     infos_a = _prepare(a, "a")
     infos_b = infos_a if b is None else _prepare(b, "b")
     everyone = infos_a if b is None else infos_a + infos_b
     box = _joint_box(everyone)
-    ftol = _default_tol(everyone, box) if given_tol is None else given_tol
+    # one tolerance for the whole model: the default or the given tol checked against the edges' size,
+    # raised to the rounding floor of their control points; not capped again per segment pair
+    ftol = ModelTolerance(max(_default_tol(everyone, box), rounding_floor(np.array(box)))) if tol is None \
+        else check_model_tol(tol, [e.edge for e in everyone])
     frame = _common_frame(everyone, ftol, box)
     _set_plane(everyone, frame)
     planar = frame is not None
@@ -699,7 +703,7 @@ def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float, lis
 
 
 # --------------------------------------------------------------------------- public API
-def intersections(a: Any, b: Any = None, *, tol: float | None = None) -> list[EdgeResult]:
+def intersections(a: Any, b: Any = None, *, tol: float | None = None) -> EdgeResultList:
     """Intersect the edges of two shapes (or of one shape with itself): the rich results.
 
     Parameters
@@ -716,13 +720,18 @@ def intersections(a: Any, b: Any = None, *, tol: float | None = None) -> list[Ed
 
     Returns
     -------
-    list of EdgeIntersection and EdgeOverlap
-        Sorted by ``(index_a, index_b, t)``. Parameters are the edges' own; a
-        contact found by two segment pairs (a B-spline knot, a shared end) is
-        reported once per edge pair; points inside an overlap are absorbed by it.
+    EdgeResultList
+        A list of EdgeIntersection and EdgeOverlap, sorted by ``(index_a, index_b, t)``.
+        Parameters are the edges' own; a contact found by two segment pairs (a B-spline
+        knot, a shared end) is reported once per edge pair; points inside an overlap are
+        absorbed by it. Its ``tol_used`` is the tolerance applied (every ``distance`` is at
+        most that).
 
     Raises
     ------
+    ToleranceError
+        If ``tol`` is not a finite distance > 0 or exceeds
+        :data:`~relief_cad.tolerances.MAX_TOLERANCE_FRACTION` of the edges' joint size.
     InputTypeError
         If an input is not a shape.
     InvalidInputError
@@ -739,8 +748,8 @@ def intersections(a: Any, b: Any = None, *, tol: float | None = None) -> list[Ed
     >>> intersections(square)
     []
     """
-    flavour, raws, _, _ = _run(a, b, tol)
-    out: list[EdgeResult] = []
+    flavour, raws, ftol, _ = _run(a, b, tol)
+    out = EdgeResultList(tol_used=float(ftol))
     natives: dict[int, Any] = {}
 
     def native(info: _EdgeInfo) -> Any:

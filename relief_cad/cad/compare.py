@@ -30,7 +30,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
-from ._checks import check_tol
+from ._checks import check_model_tol, check_tol
 from .arbiter import (
     OverlapCheck,
     PointCheck,
@@ -895,7 +895,7 @@ def compare(
     if edges_b is None:
         edges_b = edges_a
     tol = default_occt_tolerance(*(e for _, e in usable_a), *(e for _, e in usable_b)) \
-        if given_tol is None else given_tol
+        if given_tol is None else float(check_model_tol(given_tol, [e for _, e in usable_a + usable_b]))
     errors: dict[str, str] = {}
     times: dict[str, float] = {}
     t0 = time.perf_counter()

@@ -50,7 +50,7 @@ from typing import Any, Literal
 import numpy as np
 
 from ..errors import InvalidInputError, OcctError, ShapeError
-from ._checks import check_tol
+from ._checks import check_model_tol, check_tol
 from ._compat import ListOfShape, downcast_edge, downcast_vertex
 from .curvetypes import basis_curve, curve_kind
 from .flavour import flavour_of, wrap_edge
@@ -528,7 +528,8 @@ def occt_intersections(
     """
     if route not in ROUTES:
         raise InvalidInputError(f"expected route in {ROUTES}, received {route!r}")
-    given_tol = None if tol is None else check_tol(tol)
+    if tol is not None:
+        check_tol(tol)  # the type and sign first, before the shapes are read
     flavour_a = flavour_of(a)
     indexed_a, _ = usable_edges(a, "a")  # degenerated edges skipped, unbounded ones refused
     if b is None:
@@ -536,9 +537,8 @@ def occt_intersections(
     else:
         flavour_b = flavour_of(b)
         indexed_b, _ = usable_edges(b, "b")
-    if given_tol is None:
-        given_tol = default_occt_tolerance(*(e for _, e in indexed_a), *(e for _, e in indexed_b))
-    tol = given_tol
+    tol = default_occt_tolerance(*(e for _, e in indexed_a), *(e for _, e in indexed_b)) if tol is None \
+        else float(check_model_tol(tol, [e for _, e in indexed_a] + [e for _, e in indexed_b]))
     data_a = [_edge_data(e) for _, e in indexed_a]
     data_b = data_a if b is None else [_edge_data(e) for _, e in indexed_b]
     boxes_a = [_bbox(d, tol) for d in data_a]

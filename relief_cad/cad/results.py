@@ -22,10 +22,12 @@ True
 
 from __future__ import annotations
 
+import math
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any, Literal, Union
 
-__all__ = ["EdgeIntersection", "EdgeOverlap", "EdgeResult"]
+__all__ = ["EdgeIntersection", "EdgeOverlap", "EdgeResult", "EdgeResultList"]
 
 
 @dataclass(frozen=True)
@@ -142,3 +144,24 @@ class EdgeOverlap:
 
 EdgeResult = Union[EdgeIntersection, EdgeOverlap]
 """One result of :func:`relief_cad.cad.intersections`."""
+
+
+class EdgeResultList(list[EdgeResult]):
+    """The results of :func:`relief_cad.cad.intersections`: a plain list plus ``tol_used``.
+
+    ``tol_used`` is the distance tolerance (model units) actually applied to the whole model:
+    the given ``tol`` (checked against the edges' size and raised to the rounding floor of their
+    coordinates) or the CAD default. Every :class:`EdgeIntersection` has ``distance <= tol_used``.
+
+    >>> import build123d as bd
+    >>> from relief_cad.cad import intersections
+    >>> res = intersections(bd.Line((-2, 0.3), (2, -0.2)), bd.Line((0.1, -2), (0.2, 2)), tol=1e-300)
+    >>> len(res), res.tol_used > 1e-300
+    (1, True)
+    """
+
+    tol_used: float
+
+    def __init__(self, items: Iterable[EdgeResult] = (), tol_used: float = math.nan) -> None:
+        super().__init__(items)
+        self.tol_used = tol_used

@@ -286,19 +286,18 @@ def test_kernels_run_without_jit() -> None:
 
 
 @pytest.mark.parametrize("seed", range(5))
-def test_kernel_default_tolerance_matches_tolerances_module(seed: int) -> None:
-    """The kernel computes the default tolerance itself (speed); it must equal the documented one."""
-    from relief_cad._kernels import _default_tol
+def test_the_default_tolerance_used_is_the_documented_one(seed: int) -> None:
+    """The kernels have no default of their own: the one of relief_cad.tolerances is passed to them."""
     from relief_cad.tolerances import default_tolerance
 
     rng = np.random.default_rng(seed)
     for dim in (2, 3):
         pa = rng.normal(size=(4, dim)) * 10.0 ** rng.integers(-5, 6) + rng.normal() * 1e4
         pb = rng.normal(size=(3, dim)) * 10.0 ** rng.integers(-5, 6)
-        wa = rng.uniform(0.2, 5.0, size=4)
-        wb = np.ones(3)
-        expected = default_tolerance(RationalBezier(pa, wa), RationalBezier(pb, wb))
-        assert _default_tol(pa, wa, pb, wb) == pytest.approx(expected, rel=1e-12)
+        a, b = RationalBezier(pa, rng.uniform(0.2, 5.0, size=4)), RationalBezier(pb)
+        expected = default_tolerance(a, b)
+        assert intersect(a, b).tol_used == expected
+        assert intersect_many([(a, b)])[0].tol_used == expected
 
 
 def test_default_tolerance_follows_the_curve_not_its_control_polygon() -> None:
