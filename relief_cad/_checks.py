@@ -53,6 +53,7 @@ __all__ = [
     "check_span",
     "check_weights",
     "check_budget",
+    "check_count",
     "check_curve",
     "check_on_budget",
     "check_tol",
@@ -296,11 +297,39 @@ def check_degree(degree: int, what: str = "a curve") -> None:
     >>> check_degree(5000, "elevate")
     Traceback (most recent call last):
     ...
-    relief_cad.errors.DegreeError: elevate would give degree 5000; the largest supported degree is 256
+    relief_cad.errors.DegreeError: elevate would give degree 5000; the degree should be at most 256...
     """
     if degree > MAX_DEGREE:
-        raise DegreeError(
-            f"{what} would give degree {degree}; the largest supported degree is {MAX_DEGREE}")
+        raise DegreeError(f"{what} would give degree {degree}; the degree should be at most {MAX_DEGREE} "
+                          "(the largest supported degree)")
+
+
+def check_count(value: Any, name: str) -> int:
+    """Return a count (an int >= 0, not a bool): a degree increase, a number of pieces.
+
+    Raises
+    ------
+    InputTypeError
+        If ``value`` is not an int (a float, a str, ``None``, a bool).
+    DegreeError
+        If ``value`` is negative.
+
+    Examples
+    --------
+    >>> check_count(2.0, "r")
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InputTypeError: r should be an int >= 0, not float
+    >>> check_count(-1, "r")
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.DegreeError: r should be an int >= 0, not -1
+    """
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise InputTypeError(f"{name} should be an int >= 0, not {type(value).__name__}")
+    if value < 0:
+        raise DegreeError(f"{name} should be an int >= 0, not {int(value)}")
+    return int(value)
 
 
 def check_param(t: Any, name: str) -> float:

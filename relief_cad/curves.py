@@ -27,7 +27,7 @@ from typing import overload
 
 import numpy as np
 
-from ._checks import as_real_array, check_degree, check_finite, check_param, check_weights
+from ._checks import as_real_array, check_count, check_degree, check_finite, check_param, check_weights
 from ._types import FloatArray, ParamsLike, PointsLike
 from .errors import (
     DegenerateCurveError,
@@ -520,12 +520,11 @@ class RationalBezier:
         >>> RationalBezier([[0, 0], [2, 0]]).elevate(-1)
         Traceback (most recent call last):
         ...
-        relief_cad.errors.DegreeError: elevate needs r >= 0, not -1
+        relief_cad.errors.DegreeError: elevate's r should be an int >= 0, not -1
         """
-        if not isinstance(r, (int, np.integer)) or r < 0:
-            raise DegreeError(f"elevate needs r >= 0, not {r!r}")
-        check_degree(self.degree + int(r), "elevate")
-        return RationalBezier._trusted(_elevate_rows(self._h.copy(), int(r)))
+        times = check_count(r, "elevate's r")
+        check_degree(self.degree + times, "elevate")
+        return RationalBezier._trusted(_elevate_rows(self._h.copy(), times))
 
     def standard_form(self) -> RationalBezier:
         """Return the same geometry with end weights 1 (a Möbius reparametrisation).

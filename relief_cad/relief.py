@@ -74,7 +74,8 @@ def _map_points(matrix: FloatArray, pts: FloatArray, singular: str) -> FloatArra
     w = h[:, 3]
     if np.any(w == 0.0):
         i = int(np.argmax(w == 0.0))
-        raise ProjectionError(f"point {pts[i].tolist()} lies on the {singular}: its image is at infinity")
+        raise ProjectionError(f"points should lie off the {singular}; point {pts[i].tolist()} lies on it "
+                              "(its image is at infinity)")
     out: FloatArray = h[:, :3] / w[:, None]
     return out
 
@@ -175,7 +176,7 @@ class ReliefPerspective:
         >>> ReliefPerspective(3.0).apply([0, 0, -3])
         Traceback (most recent call last):
         ...
-        relief_cad.errors.ProjectionError: point [0.0, 0.0, -3.0] lies on the neutral plane z = -k: ...
+        relief_cad.errors.ProjectionError: points should lie off the neutral plane z = -k; point ...
         """
         if isinstance(x, RationalBezier):
             return _require_curve(x, 3, "the curve").transformed(self.matrix)

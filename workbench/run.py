@@ -364,7 +364,7 @@ def run_compare(
     already = len(done_ids & set(expected))
     if already and say is not None:
         say(f"resuming: {already} of {len(expected)} items already done in {results_path}")
-    stopped = interrupted = False
+    interrupted = False
     bar = tqdm(
         total=len(expected),
         initial=already,
@@ -380,7 +380,7 @@ def run_compare(
             write = _writer(sink, bar, stop_after)
             ex, window, close = _executor(workers, scheduler)
             try:
-                stopped = _drive(ex, window, _batches(corpus, set(expected), done_ids, batch), write)
+                _drive(ex, window, _batches(corpus, set(expected), done_ids, batch), write)
             except KeyboardInterrupt:
                 interrupted = True
             finally:
@@ -394,7 +394,7 @@ def run_compare(
     summary = summarize(results)
     have = {r.get("id") for r in results}
     summary.update(
-        complete=not (stopped or interrupted) and set(expected) <= have,
+        complete=not interrupted and set(expected) <= have,  # --stop-after N with N items left: all done
         interrupted=interrupted,
         resumed=already,
         expected=len(expected),
