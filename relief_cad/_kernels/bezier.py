@@ -196,7 +196,7 @@ def _curve_box_update(
     m = P.shape[0]
     d = P.shape[1]
     ns = 2 * m + 1
-    wk = np.empty((m, d + 1))
+    wk: cython.double[:, :] = np.empty((m, d + 1))  # typed: numpy indexing here cost 0.1 s at degree 32
     for k in range(ns):
         t = k / (ns - 1.0)
         s = 1.0 - t
