@@ -33,9 +33,7 @@ def test_contact_pair_swapped(case: dict[str, Any]) -> None:
     _check(case, _curve(case["a"], case["wa"]), _curve(case["b"], case["wb"]), swap=True)
 
 
-@pytest.mark.parametrize("case", [
-    pytest.param(c, marks=pytest.mark.xfail(strict=False, reason="known open defect after the merge of the compiled core, contacts and the input layer (issue 12 follow-up): fold self-overlap"))
-    if c["name"] == "fold self-overlap" else c for c in SELF], ids=[c["name"] for c in SELF])
+@pytest.mark.parametrize("case", SELF, ids=[c["name"] for c in SELF])
 def test_contact_self(case: dict[str, Any]) -> None:
     res = intersect(_curve(case["a"], case["wa"]))
     exp = [e["overlap"] for e in case["expected"]]
