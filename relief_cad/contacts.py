@@ -297,6 +297,26 @@ def _rescaled(items: Sequence[Result], exp: int) -> list[Result]:
             if isinstance(r, Intersection) else r for r in items]
 
 
+def _to_fold(c: RationalBezier, o: Overlap, tol: float) -> Overlap:
+    """``o`` ending exactly at the fold where ``c`` turns back, when ``o`` is a stretch run out and back.
+
+    A gap between the outward end ``t1`` and the return end ``u1`` (``t1 < u1``) is closed when
+    the curve retraces itself up to the fold; an overrun (``t1 >= u1`` with ``u`` running back:
+    both stretches claim the same parameters, as the pieces of a split curve can at the fold) is
+    cut back to the fold. Otherwise ``o`` is returned as it is.
+    """
+    (t0, t1), (u0, u1) = o.t, o.u
+    if u1 > t1:
+        m = _fold(c, t1, u1)
+        if m is not None and m > t1 and _coincide(c, c, t1, m, u1, m, tol):
+            return Overlap(t=(t0, m), u=(u0, m))
+    elif u0 > u1 and u0 > t0:
+        m = _fold(c, t0, u0)
+        if m is not None and t0 < m < u0 and _coincide(c, c, t0, m, u0, m, tol):
+            return Overlap(t=(t0, m), u=(u0, m))
+    return o
+
+
 def refine_self(c: RationalBezier, items: Sequence[Result], tol: float) -> list[Result]:
     """Return the self-intersections of ``c`` with retraced stretches as one overlap each.
 
@@ -326,17 +346,12 @@ def refine_self(c: RationalBezier, items: Sequence[Result], tol: float) -> list[
         return _rescaled(refine_self(_scaled(c, exp), _rescaled(items, -exp), math.ldexp(tol, -exp)), exp)
     pts = [r for r in items if isinstance(r, Intersection)]
     ovs = [r for r in items if isinstance(r, Overlap)]
-    if not ((len(pts) >= 2 and any(p.kind == "tangent" for p in pts)) or (ovs and pts)):
+    chained = (len(pts) >= 2 and any(p.kind == "tangent" for p in pts)) or (ovs and pts)
+    if not (chained or ovs):
         return list(items)
-    found = []
-    for o in _chains(c, c, pts, ovs, tol, ends=False) + ovs:
-        if o.t == o.u:
-            continue  # the curve against itself, not a retraced stretch
-        t1, u1 = o.t[1], o.u[1]
-        m = _fold(c, t1, u1) if u1 > t1 else None
-        if m is not None and m > t1 and _coincide(c, c, t1, m, u1, m, tol):
-            o = Overlap(t=(o.t[0], m), u=(o.u[0], m))
-        found.append((o, True))
+    cands = (_chains(c, c, pts, ovs, tol, ends=False) if chained else []) + ovs
+    # o.t == o.u: the curve against itself, not a retraced stretch
+    found = [(_to_fold(c, o, tol), True) for o in cands if o.t != o.u]
     merged = _drop_nested(self_overlaps(found))
     res: list[Result] = [p for p in pts if not _covered(p, merged)]
     res += merged

@@ -16,7 +16,10 @@ The planar solver (one compiled kernel, :mod:`relief_cad._kernels.planar`):
 3. Bézier clipping (Sederberg & Nishita) with the fat lines widened by ``tol``,
    alternating roles, a perpendicular fat line when a clip stalls, a split of the
    larger sub-curve when that stalls too, and a "flat band" stop when both
-   sub-curves lie within ``tol`` of a line (tangent contacts);
+   sub-curves lie within ``tol`` of a line (tangent contacts); a candidate box
+   is one where both sub-polygons span at most 1e-7 of the curves' own extent
+   (sampled on the curves: a Chebyshev-like polygon can be 1e9 times larger),
+   or ``tol``;
 4. candidate boxes are clustered; Newton's method on ``a(t) - b(u) = 0`` polishes
    every root, finished with a double-double residual when the root is
    ill-conditioned (high degree, small crossing angle); a root is *certified*
@@ -45,7 +48,7 @@ The planar solver (one compiled kernel, :mod:`relief_cad._kernels.planar`):
    function that has one (osculating contacts to 1e-9 on exact data).
 
 Accuracy: transversal crossings to a few ulps of the parameters (1e-13 on the
-certified corpora, including degree-20 Chebyshev-like curves and crossings 1e-8
+certified corpora, including Chebyshev-like curves of degree 20 to 40 and crossings 1e-8
 apart); tangent contacts to about 1e-9, including osculating ones.
 
 >>> from relief_cad.curves import RationalBezier

@@ -181,6 +181,36 @@ def _bbox_update(P: cython.const[cython.double][:, :], box: cython.double[:]):
         box[4] = max(box[4], abs(x), abs(y))
 
 
+def _curve_box_update(
+    P: cython.const[cython.double][:, :], W: cython.const[cython.double][:], box: cython.double[:]
+):
+    """Grow ``box`` (per coordinate ``[lo, hi]`` pairs) by samples of the curve itself.
+
+    The curve is sampled at ``2 (n + 1) + 1`` uniform parameters by homogeneous de
+    Casteljau: the curve's own extent, not its control polygon's (which can be far
+    larger for ill-conditioned curves).
+    """
+    m = P.shape[0]
+    d = P.shape[1]
+    ns = 2 * m + 1
+    wk: cython.double[:, :] = np.empty((m, d + 1))  # typed: numpy indexing here cost 0.1 s at degree 32
+    for k in range(ns):
+        t = k / (ns - 1.0)
+        s = 1.0 - t
+        for i in range(m):
+            for j in range(d):
+                wk[i, j] = W[i] * P[i, j]
+            wk[i, d] = W[i]
+        for r in range(1, m):
+            for i in range(m - r):
+                for j in range(d + 1):
+                    wk[i, j] = s * wk[i, j] + t * wk[i + 1, j]
+        for j in range(d):
+            x = wk[0, j] / wk[0, d]
+            box[2 * j] = min(box[2 * j], x)
+            box[2 * j + 1] = max(box[2 * j + 1], x)
+
+
 def _homog(
     P: cython.const[cython.double][:, :],
     W: cython.const[cython.double][:],

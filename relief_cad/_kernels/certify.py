@@ -12,13 +12,19 @@ import cython
 from .bezier import _eval
 
 
-def _two_sum(a: cython.double, b: cython.double):
+@cython.cfunc
+@cython.inline
+@cython.exceptval(check=False)
+def _two_sum(a: cython.double, b: cython.double) -> tuple[cython.double, cython.double]:
     s = a + b
     bb = s - a
     return s, (a - (s - bb)) + (b - bb)
 
 
-def _two_prod(a: cython.double, b: cython.double):
+@cython.cfunc
+@cython.inline
+@cython.exceptval(check=False)
+def _two_prod(a: cython.double, b: cython.double) -> tuple[cython.double, cython.double]:
     p = a * b
     c = 134217729.0 * a
     ah = c - (c - a)
@@ -29,19 +35,34 @@ def _two_prod(a: cython.double, b: cython.double):
     return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
 
 
-def _dd_add(ah: cython.double, al: cython.double, bh: cython.double, bl: cython.double):
+@cython.cfunc
+@cython.inline
+@cython.exceptval(check=False)
+def _dd_add(
+    ah: cython.double, al: cython.double, bh: cython.double, bl: cython.double
+) -> tuple[cython.double, cython.double]:
     s, e = _two_sum(ah, bh)
     e += al + bl
     return _two_sum(s, e)
 
 
-def _dd_mul(ah: cython.double, al: cython.double, bh: cython.double, bl: cython.double):
+@cython.cfunc
+@cython.inline
+@cython.exceptval(check=False)
+def _dd_mul(
+    ah: cython.double, al: cython.double, bh: cython.double, bl: cython.double
+) -> tuple[cython.double, cython.double]:
     p, e = _two_prod(ah, bh)
     e += ah * bl + al * bh
     return _two_sum(p, e)
 
 
-def _dd_div(ah: cython.double, al: cython.double, bh: cython.double, bl: cython.double):
+@cython.cfunc
+@cython.inline
+@cython.exceptval(check=False)
+def _dd_div(
+    ah: cython.double, al: cython.double, bh: cython.double, bl: cython.double
+) -> tuple[cython.double, cython.double]:
     q1 = ah / bh
     ph, pl = _dd_mul(q1, 0.0, bh, bl)
     rh, rl = _dd_add(ah, al, -ph, -pl)
@@ -49,7 +70,11 @@ def _dd_div(ah: cython.double, al: cython.double, bh: cython.double, bl: cython.
     return _two_sum(q1, q2)
 
 
-def _eval_dd(H: cython.const[cython.double][:, :], t: cython.double, wk: cython.double[:, :]):
+@cython.cfunc
+@cython.exceptval(check=False)
+def _eval_dd(
+    H: cython.const[cython.double][:, :], t: cython.double, wk: cython.double[:, :]
+) -> tuple[cython.double, cython.double, cython.double, cython.double]:
     """Point of the rational curve ``H`` at ``t`` in double-double ``(xh, xl, yh, yl)``.
 
     de Casteljau with every operation error-free-transformed (``wk``: scratch of

@@ -14,7 +14,7 @@ import cython
 import numpy as np
 from cython.cimports.libc.math import hypot
 
-from .bezier import _cartesian, _eval, _frame, _grow, _homog, _segment
+from .bezier import _cartesian, _curve_box_update, _eval, _frame, _grow, _homog, _segment
 from .certify import _polish_dd
 from .clip import clip_range_kernel, fat_line_kernel
 from .constants import _EPS, _ROUND, _SPLIT_RATIO, KIND_CROSSING, KIND_OVERLAP, KIND_TANGENT, KIND_UNRESOLVED
@@ -230,7 +230,22 @@ def intersect_pair_kernel(
     ncand = 0
     unres = np.empty((4, 4))
     nunres = 0
-    epsb = max(tl, 1e-7)
+    # candidate boxes: 1e-7 of the curves' own extent, which for an ill-conditioned curve
+    # (Chebyshev-like, polygon 1e9 times its curve) is far below the frame's size; a box of
+    # 1e-7 frame units could then hold the whole curve and all its crossings (issue 12)
+    epsb = 1e-7
+    ext = scale * hypot(
+        max(PA[0, 0], PA[na, 0], PB[0, 0], PB[nb, 0]) - min(PA[0, 0], PA[na, 0], PB[0, 0], PB[nb, 0]),
+        max(PA[0, 1], PA[na, 1], PB[0, 1], PB[nb, 1]) - min(PA[0, 1], PA[na, 1], PB[0, 1], PB[nb, 1]),
+    )
+    if ext < 0.25:  # the end points span less than a quarter of the frame: sample the curves
+        box: cython.double[:] = np.array([math.inf, -math.inf, math.inf, -math.inf])
+        _curve_box_update(PA, WA, box)
+        _curve_box_update(PB, WB, box)
+        ext = scale * hypot(box[1] - box[0], box[3] - box[2])
+        if ext < 0.25:
+            epsb = 4e-7 * ext
+    epsb = max(tl, epsb)
     iters = 0
     margin = 1e-9
     while nstack > 0:

@@ -23,29 +23,17 @@ CASES: list[dict[str, Any]] = json.loads(Path(__file__).with_name("contact_corpu
 PAIRS = [c for c in CASES if c["b"] is not None]
 SELF = [c for c in CASES if c["b"] is None]
 
-# The kernel still loses crossings of Chebyshev-like curves of degree 25-40 (issue 12, "a silent
-# miss at high degree"), with complete=True; pinned here so that a fix shows up at once.
-_KERNEL_MISS = pytest.mark.xfail(strict=True, reason="kernel misses crossings at degree 25-40 (issue 12)")
-
-
-def _params(cases: list[dict[str, Any]]) -> list[Any]:
-    return [pytest.param(c, id=c["name"], marks=_KERNEL_MISS if c["family"] == "chebyshev" else ())
-            for c in cases]
-
-
-@pytest.mark.parametrize("case", _params(PAIRS))
+@pytest.mark.parametrize("case", PAIRS, ids=[c["name"] for c in PAIRS])
 def test_contact_pair(case: dict[str, Any]) -> None:
     _check(case, _curve(case["a"], case["wa"]), _curve(case["b"], case["wb"]))
 
 
-@pytest.mark.parametrize("case", _params(PAIRS[::4]))
+@pytest.mark.parametrize("case", PAIRS[::4], ids=[c["name"] for c in PAIRS[::4]])
 def test_contact_pair_swapped(case: dict[str, Any]) -> None:
     _check(case, _curve(case["a"], case["wa"]), _curve(case["b"], case["wb"]), swap=True)
 
 
-@pytest.mark.parametrize("case", [
-    pytest.param(c, marks=pytest.mark.xfail(strict=False, reason="known open defect after the merge of the compiled core, contacts and the input layer (issue 12 follow-up): fold self-overlap"))
-    if c["name"] == "fold self-overlap" else c for c in SELF], ids=[c["name"] for c in SELF])
+@pytest.mark.parametrize("case", SELF, ids=[c["name"] for c in SELF])
 def test_contact_self(case: dict[str, Any]) -> None:
     res = intersect(_curve(case["a"], case["wa"]))
     exp = [e["overlap"] for e in case["expected"]]
