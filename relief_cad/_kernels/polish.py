@@ -323,12 +323,11 @@ def _coincide(
     """
     u = ua
     direction = 1.0 if ub > ua else -1.0
-    step = 1.0 / nsamp  # a double: k / nsamp of two C integers is an integer division when compiled
     fwd = np.empty(nsamp + 1)
     fwd[0] = ua
     fwd[nsamp] = ub
     for k in range(1, nsamp):
-        s = ta + (tb - ta) * (k * step)
+        s = ta + (tb - ta) * (k / nsamp)
         px, py, _a, _b, _c, _d = _eval(HA, s, wa)
         uu = _local_proj(HB, px, py, u, wb)
         x, y, _a, _b, _c, _d = _eval(HB, uu, wb)
@@ -342,11 +341,11 @@ def _coincide(
         return False
     # and back: b's stretch lies on a (seeded from the forward correspondence)
     for k in range(1, nsamp):
-        s = ua + (ub - ua) * (k * step)
+        s = ua + (ub - ua) * (k / nsamp)
         j = 0
         while j < nsamp - 1 and (fwd[j + 1] - s) * direction < 0.0:
             j += 1
-        seed = ta + (tb - ta) * (j * step)
+        seed = ta + (tb - ta) * (j / nsamp)
         px, py, _a, _b, _c, _d = _eval(HB, s, wb)
         tt = _local_proj(HA, px, py, seed, wa)
         x, y, _a, _b, _c, _d = _eval(HA, tt, wa)

@@ -126,17 +126,6 @@ def test_end_points_exact_and_once() -> None:
     assert [(x.t, x.u) for x in r] == [(0.0, 1.0)]
 
 
-@pytest.mark.parametrize("b", [RationalBezier([[0.0, 0.0], [1.0, -1.0], [2.0, 0.0]]),
-                               RationalBezier([[1.0, 0.5], [1.5, -1.0], [2.0, 0.0]])])
-def test_curves_meeting_at_two_end_points_do_not_overlap(b: RationalBezier) -> None:
-    # two end contacts are tested for a coincident stretch between them; the compiled test once
-    # sampled only its first point (an integer division) and called every such pair an overlap
-    a = RationalBezier([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]])
-    r = intersect(a, b)
-    assert not r.overlaps
-    assert [(x.t, x.u) for x in r] == [(0.5 if b.control_points[0, 0] else 0.0, 0.0), (1.0, 1.0)]
-
-
 def test_overlap_with_reversed_direction() -> None:
     a = RationalBezier([[0.0, 0.0], [1.0, 3.0], [3.0, -1.0], [4.0, 2.0]])
     b = a.segment(0.75, 0.25)
