@@ -60,6 +60,7 @@ apart); tangent contacts to about 1e-9, including osculating ones.
 from __future__ import annotations
 
 import gc
+import math
 from collections.abc import Iterable, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from typing import Literal
@@ -413,7 +414,10 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     s = (pts - p) @ d / dd
     lo = float(min(s.min(), 0.0))
     hi = float(max(s.max(), 0.0))
-    pad = 0.01 * (hi - lo) + 1.0
+    # 1 % beyond the curve's extent along the line, in the curve's own scale (a fixed pad of one
+    # direction length made the segment, and its rounding floor, huge beside a tiny curve)
+    ext = max(hi - lo, float(np.ptp(pts, axis=0).max()) / math.sqrt(dd))
+    pad = 0.01 * ext if ext > 0.0 else 1.0
     lo -= pad
     hi += pad
     seg = np.array([p + lo * d, p + hi * d])
