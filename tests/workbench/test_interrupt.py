@@ -86,7 +86,7 @@ def test_one_sigint_stops_compare_within_10_s_and_it_resumes(corpus, tmp_path):
     assert sorted(final) == sorted(ids) and len(final) == len(set(final)) == N
 
 
-@pytest.mark.parametrize("delay", [0.5, 1.0, 1.5])
+@pytest.mark.parametrize("delay", [0.5, 1.0])  # start-up; a Ctrl-C mid-run is the test above
 def test_a_sigint_during_start_up_exits_130_without_a_traceback(corpus, tmp_path, delay):
     """A Ctrl-C while the workbench imports OCP (about a second) must not cut that import in half.
 
