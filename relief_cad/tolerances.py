@@ -88,8 +88,9 @@ def default_tolerance(*inputs: CurveOrPoints) -> float:
     Returns
     -------
     float
-        A positive distance in model units (see the module docstring). A set of
-        coincident points at the origin gets ``1e-300``.
+        A positive distance in model units (see the module docstring), never below
+        :func:`rounding_floor` of the inputs (at least ``1e-300``): coincident points at the
+        origin, or subnormal coordinates, get ``1e-300``.
 
     Examples
     --------
@@ -135,9 +136,9 @@ def _tolerance_of(extents: list[FloatArray], coords: list[FloatArray]) -> float:
         return 1e-300
     size = float(np.linalg.norm((stacked.max(axis=0) - stacked.min(axis=0)) / scale)) * scale
     tol = RELATIVE_TOLERANCE * size + ROUNDING_ULPS * _EPS * big
-    if not math.isfinite(tol) or tol <= 0.0:
-        return 1e-300
-    return tol
+    if not math.isfinite(tol):
+        return _floor(big)
+    return max(tol, _floor(big))  # never below the floor (subnormal data: 64 eps * 2e-308 < 1e-300)
 
 
 def size_of(*curves: RationalBezier | FloatArray) -> float:
