@@ -76,9 +76,12 @@ def _foot(b: RationalBezier, pts: FloatArray, enough: float = 0.0) -> tuple[Floa
     grid = np.linspace(0.0, 1.0, n + 1)
     vals = b.evaluate(grid)
     d2 = ((pts[:, None, :] - vals[None, :, :]) ** 2).sum(axis=2)
-    # Newton from the three nearest grid points (near a double point the nearest may be on the
-    # other branch), keeping the best
-    seeds = np.argsort(d2, axis=1)[:, :3]
+    # Newton from the three nearest local minima of the grid distance, keeping the best: near a
+    # double point, or on a thin loop whose branches pass closer than the grid spacing, the nearest
+    # grid points may all lie on the other branch, while each branch has a local minimum of its own
+    left = np.concatenate([np.full((d2.shape[0], 1), np.inf), d2[:, :-1]], axis=1)
+    right = np.concatenate([d2[:, 1:], np.full((d2.shape[0], 1), np.inf)], axis=1)
+    seeds = np.argsort(np.where((d2 <= left) & (d2 <= right), d2, np.inf), axis=1, kind="stable")[:, :3]
     m = pts.shape[0]
     pts = np.repeat(pts, seeds.shape[1], axis=0)
     u = grid[seeds.ravel()]
@@ -562,7 +565,9 @@ def whole_overlap(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap |
     """The overlap of two curves with the same end points that coincide all along, else None.
 
     Checked before clipping (coincident curves are the clipping's slowest case): the end points
-    must be equal exactly, so the test costs two comparisons for every other pair.
+    must match within ``tol`` (a degree-elevated or rescaled copy may move them by a rounding), so
+    the test costs two comparisons for every other pair. Closed curves match at both ends either
+    way round; the sense is taken from where interior points of ``a`` fall on ``b``.
 
     Examples
     --------
@@ -576,13 +581,30 @@ def whole_overlap(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap |
     pa, pb = a.control_points, b.control_points
     if pa.shape[1] != pb.shape[1]:
         return None
+    closed = _near(pa[0], pa[-1], tol)
     for u0, u1 in ((0.0, 1.0), (1.0, 0.0)):
         i0, i1 = (0, -1) if u0 == 0.0 else (-1, 0)
-        same_ends = np.array_equal(pa[0], pb[i0]) and np.array_equal(pa[-1], pb[i1])
-        if same_ends and not np.array_equal(pa[0], pa[-1]):
+        same_ends = _near(pa[0], pb[i0], tol) and _near(pa[-1], pb[i1], tol)
+        if same_ends and (not closed or _runs_along(a, b, u1 - u0, tol)):
             if _coincide(a, b, 0.0, 1.0, u0, u1, tol):
                 return Overlap(t=(0.0, 1.0), u=(u0, u1))
     return None
+
+
+def _near(p: FloatArray, q: FloatArray, tol: float) -> bool:
+    """True when the points ``p`` and ``q`` are within ``tol`` in every coordinate."""
+    return bool(np.max(np.abs(p - q)) <= tol)
+
+
+def _runs_along(a: RationalBezier, b: RationalBezier, sense: float, tol: float) -> bool:
+    """True when ``b`` runs through ``a(1/4), a(1/2), a(3/4)`` (within ``tol``) in the sense of ``sense``.
+
+    Two closed curves from one point match both ways at their ends; the feet of interior points
+    tell whether ``b`` goes round the same way (``sense > 0``) or the other way (``sense < 0``).
+    """
+    fu, fd = _foot(b, a.evaluate(np.array([0.25, 0.5, 0.75])), 0.25 * tol)
+    steps = np.diff(fu) * sense
+    return bool(np.all(fd <= tol) and np.all(steps > 0.0))
 
 
 def needs_refining(a: RationalBezier, b: RationalBezier, items: Sequence[Result]) -> bool:

@@ -339,8 +339,7 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
     pb = b.control_points
     x0 = pa.item(0)  # the first x decides for almost every pair (a scalar read costs 50 ns)
     whole = whole_overlap(a, b, ftol) if (
-        (x0 == pb.item(0) and np.array_equal(pa[0], pb[0]))
-        or (x0 == pb.item(-2) and np.array_equal(pa[0], pb[-1]))) else None
+        abs(x0 - pb.item(0)) <= ftol or abs(x0 - pb.item(-2)) <= ftol) else None
     if whole is not None:  # coincident curves: the clipping's slowest case, decided by geometry
         return IntersectionList([whole], tol_used=ftol)
     # a RationalBezier's arrays are float64: the kernel takes them as they are (strided views too)

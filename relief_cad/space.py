@@ -53,7 +53,7 @@ from ._kernels import (
     space_pair_kernel,
 )
 from ._types import FloatArray
-from .contacts import needs_refining, range_exponent, refine_contacts, refine_self
+from .contacts import needs_refining, range_exponent, refine_contacts, refine_self, whole_overlap
 from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError
 from .relief import ReliefPerspective, central_projection
@@ -391,6 +391,9 @@ def intersect_space(
     else:
         b3 = b if b.dim == 3 else b.embedded(3)
         tol_s = resolve_tolerance(given, a3, b3)
+        whole = whole_overlap(a3, b3, tol_s)  # coincident curves (closed ones too) by geometry
+        if whole is not None:
+            return IntersectionList([whole], tol_used=tol_s)
         items, boxes = _rows_to_results(_pair(a3.homogeneous, b3.homogeneous, tol_s, nbudget))
         if needs_refining(a3, b3, items):
             items = refine_contacts(a3, b3, items, tol_s)

@@ -113,3 +113,27 @@ def test_foot_leaves_a_fold_tip() -> None:
     pts = piece.evaluate(np.array([0.853, 0.95]))    # nearest grid point: the tip, a stationary point
     _u, dist = _foot(piece, pts)
     assert np.all(dist <= 1e-12)
+
+
+# the two closed cubics (first control point = last) of the space fuzz's swap and determinism
+# tests, against themselves: every frame's images overlapped where the kernel's end contacts
+# paired a(0) with b(1), so the space path gave up (BudgetExceededError), and the planar path
+# answered the wrong orientation, u = (1, 0), for a curve against itself
+CLOSED = [
+    RationalBezier([[3.294797e-106, 0.55, 5.822546], [3.526472, -2.225074e-308, -2.314974],
+                    [-4.729646, 4.6777e-29, 9.788799], [3.294797e-106, 0.55, 5.822546]]),
+    RationalBezier([[5.947891e-294, -2.121377e-159, 2.695167], [-6.340934, -6.794267, -3.463299],
+                    [5.911397e-2, -2.710342e-127, -5.736203], [5.947891e-294, -2.121377e-159, 2.695167]],
+                   weights=[0.2, 0.2, 0.2, 0.2]),
+]
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+@pytest.mark.parametrize("which", [0, 1])
+def test_closed_curve_against_itself_is_one_overlap_in_its_own_sense(dim: int, which: int) -> None:
+    c = CLOSED[which]
+    c = RationalBezier(c.control_points[:, :dim], c.weights)
+    assert list(intersect(c, c)) == [Overlap(t=(0.0, 1.0), u=(0.0, 1.0))]
+    assert list(intersect(c, c.elevate(1))) == [Overlap(t=(0.0, 1.0), u=(0.0, 1.0))]
+    assert list(intersect(c, c.reversed())) == [Overlap(t=(0.0, 1.0), u=(1.0, 0.0))]
+    assert list(intersect(c.reversed(), c)) == [Overlap(t=(0.0, 1.0), u=(1.0, 0.0))]
