@@ -123,9 +123,21 @@ def signature(results: list) -> list:
     return [(r.index_a, r.index_b, r.t, r.u, getattr(r, "point", None), r.kind) for r in results]
 
 
-@fuzz("cad: edge pairs (swap, reversal, determinism)", edge_pairs(), examples=500, min_answered=1.0)
+def degenerated(*shapes: bd.Edge) -> bool:
+    """Whether OCCT made one of the edges a point (build123d's line between points < 1e-7 apart)."""
+    return any(BRep_Tool.Degenerated_s(e.wrapped) for e in shapes)
+
+
+# at scale 1e-6 a line between two drawn points < 1e-7 apart (OCCT's Precision::Confusion) is a
+# degenerated edge, a point: that input must be refused by name (ShapeError), on either side
+@fuzz("cad: edge pairs (swap, reversal, determinism)", edge_pairs(), examples=500, min_answered=0.9)
 def test_fuzz_edge_pairs(case: Case, drawn: tuple[bd.Edge, bd.Edge, float]) -> None:
     a, b, scale = drawn
+    if degenerated(a, b):
+        name = "a" if degenerated(a) else "b"
+        case.refuses(lambda: api.intersections(a, b), ValueError, f"shape {name}", "degenerated",
+                     error=ShapeError)
+        return
     ab = api.intersections(a, b)
     check_results(case, ab, [a], [b], scale)
     ba = api.intersections(b, a)

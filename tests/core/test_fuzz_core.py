@@ -265,9 +265,11 @@ def _close(case: Case, f: RationalBezier, g_values: np.ndarray, c: RationalBezie
     case.check(np.allclose(got, g_values, rtol=0, atol=1e-10 * scale), what, got, g_values)
 
 
+# about a quarter of the split/segment/elevate cases draw bad arguments; hypothesis favours the small
+# integers, so 40-50 % of all cases are refusals in practice (the bounds say "mostly answered", no more)
 @fuzz("core: split/segment/elevate/reversed", curves(max_degree=5), st.sampled_from(["split", "segment",
       "elevate", "reversed"]), st.integers(0, 3), inner, unit, st.integers(0, 5),
-      examples=1200, min_answered=0.5, max_answered=0.9)
+      examples=1200, min_answered=0.3, max_answered=0.9)
 def test_fuzz_curve_operations(case: Case, c: RationalBezier, op: str, bad: int, s: float, s2: float,
                                i: int) -> None:
     if bad == 0 and op in ("split", "segment"):
@@ -435,9 +437,13 @@ def test_fuzz_intersect_line(case: Case, c: RationalBezier, t0: float, angle: fl
         case.check(float(np.linalg.norm(c(r.t) - (p + r.u * d))) <= near * (1 + abs(r.u)), r)
     moved = intersect_line(c.transformed(m), m[:2, :2] @ p + m[:2, 2], m[:2, :2] @ d, on_budget="return")
     back = intersect_line(c, p + lam * d, -d, on_budget="return")
+    # a point within tol_used of the line is a meeting: a crossing's parameter is known to
+    # tol_used / (speed * sine), sine > 0.05 (a curve shorter than the tolerance, e.g. 7e-23 long
+    # against the default 1e-9 of a line through a point 1 away, may be met at any t)
+    used = max(res.tol_used, moved.tol_used / float(np.linalg.norm(m[:2, 0])), back.tol_used)
     for r in line_crossings(c, d, res):
         speed = float(np.linalg.norm(c.derivative(r.t)))
-        tol = 1e-9 + 1e5 * EPS * big * (1 + abs(r.u)) / min(speed, 1.0) / 0.05
+        tol = 1e-9 + 1e5 * EPS * big * (1 + abs(r.u)) / min(speed, 1.0) / 0.05 + used / min(speed, 1.0) / 0.05
         case.check(any(abs(q.t - r.t) <= tol and abs(q.u - r.u) <= tol for q in moved.points),
                    "similarity", r, list(moved))
         case.check(any(abs(q.t - r.t) <= tol and abs(q.u - (lam - r.u)) <= tol * (1 + abs(lam))
