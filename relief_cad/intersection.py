@@ -413,17 +413,17 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     s = (pts - p) @ d / dd
     lo = float(min(s.min(), 0.0))
     hi = float(max(s.max(), 0.0))
+    # the default (curve and point), or the given tol checked against the curve
+    base = default_tolerance(curve, p[None, :]) if given is None else resolve_tolerance(given, curve)
     # 1 % beyond the curve's extent along the line, in the curve's own scale (a fixed pad of one
-    # direction length made the segment, and its rounding floor, huge beside a tiny curve)
+    # direction length made the segment, and its rounding floor, huge beside a tiny curve), and
+    # longer than the tolerance: a curve shorter than the rounding of its coordinates (one ulp at
+    # x = 1) made both ends of the segment round to one point, and its crossing was lost
     ext = max(hi - lo, float(np.ptp(pts, axis=0).max()) / math.sqrt(dd))
-    pad = 0.01 * ext if ext > 0.0 else 1.0
-    lo -= pad
-    hi += pad
-    seg = np.array([p + lo * d, p + hi * d])
-    # the default (curve and point), or the given tol checked against the curve; both raised to the
-    # rounding floor of the segment that stands for the line
-    ftol = max(default_tolerance(curve, p[None, :]) if given is None else resolve_tolerance(given, curve),
-               rounding_floor(curve, RationalBezier(seg)))
+    pad = max(0.01 * ext, 4.0 * base / math.sqrt(dd))
+    seg = np.array([p + (lo - pad) * d, p + (hi + pad) * d])
+    # raised to the rounding floor of the segment that stands for the line
+    ftol = max(base, rounding_floor(curve, RationalBezier(seg)))
     res = _planar(pts, curve.weights, seg, np.ones(2), ftol, nbudget)
     items: list[Result] = []
     for r in res:

@@ -50,6 +50,7 @@ from ._kernels import (
     SPACE_COLS,
     STATUS_ARTEFACT,
     _space_frame,
+    intersect_one_kernel,
     space_pair_kernel,
 )
 from ._types import FloatArray
@@ -248,6 +249,9 @@ def _pair_in_range(ha: FloatArray, hb: FloatArray, tol: float, budget: int) -> F
     # ψ∘φ = ψ: the span of the relief changes nothing (see intersect_space); the kernel takes 2
     rows, n, status = space_pair_kernel(ha, hb, tol, budget, 2.0)
     if status == STATUS_ARTEFACT:
+        flat = _coplanar_rows(ha, hb, tol, budget)
+        if flat is not None:
+            return flat
         raise BudgetExceededError(
             "every projection frame showed an overlap of the projected curves that is not an overlap "
             "in space (both curves on one cone through each centre tried); they could not be separated",
@@ -255,6 +259,29 @@ def _pair_in_range(ha: FloatArray, hb: FloatArray, tol: float, budget: int) -> F
         )
     out: FloatArray = rows[:n]
     return out
+
+
+def _coplanar_rows(ha: FloatArray, hb: FloatArray, tol: float, budget: int) -> FloatArray | None:
+    """Space rows of two curves lying in one plane (within ``tol``), intersected in that plane.
+
+    Curves on a common cone through every centre tried (collinear segments, a segment and a curve
+    running out and back along it) have images that overlap in every frame; when all their control
+    points lie within ``tol`` of one plane, the convex hull puts the curves there too, and the planar
+    clipping in that plane's coordinates answers them. ``None`` when they are not coplanar.
+    """
+    pa = ha[:, :3] / ha[:, 3:]
+    pb = hb[:, :3] / hb[:, 3:]
+    centre = np.vstack([pa, pb]).mean(axis=0)
+    axes = np.linalg.svd(np.vstack([pa, pb]) - centre)[2]  # rows: in-plane, in-plane, normal
+    if float(np.max(np.abs((np.vstack([pa, pb]) - centre) @ axes[2]))) > tol:
+        return None
+    flat = intersect_one_kernel((pa - centre) @ axes[:2].T, ha[:, 3].copy(), (pb - centre) @ axes[:2].T,
+                                hb[:, 3].copy(), tol, budget)
+    rows = np.zeros((flat.shape[0], SPACE_COLS))
+    rows[:, 0:5] = flat[:, 1:6]  # kind, t, u, t1, u1 (boxes: t0, u0, t1, u1)
+    rows[:, 5:8] = centre + flat[:, 6:7] * axes[0] + flat[:, 7:8] * axes[1]
+    rows[:, 8] = flat[:, 8]
+    return rows
 
 
 def _monotone(points: FloatArray) -> bool:
