@@ -175,9 +175,13 @@ def intersect_pair_kernel(
         tl = 1e-300
     inv = 1.0 / scale
     # one allocation per column count for all scratch arrays (leading-axis slices stay C-contiguous)
-    b3: cython.double[:, :] = np.empty((3 * ma + 3 * mb, 3))
-    b2: cython.double[:, :] = np.empty((2 * ma + 2 * mb, 2))
+    # (and the small fixed-size arrays of the steps below: each allocation costs about a
+    # microsecond; an array that must grow is replaced by a larger copy, see _room)
+    b3: cython.double[:, :] = np.empty((3 * ma + 3 * mb + 8, 3))
+    b2: cython.double[:, :] = np.empty((2 * ma + 2 * mb + 16, 2))
     b1: cython.double[:] = np.empty(3 * ma + 3 * mb)
+    b4: cython.double[:, :] = np.empty((88, 4))
+    b6: cython.double[:, :] = np.empty((ma + mb, 6))
     wa: cython.double[:, :] = b3[0:ma]
     wb: cython.double[:, :] = b3[ma : ma + mb]
     rnd: cython.double = _ROUND * max(1.0, 1.0)  # frame is normalised to |x| < 1
@@ -199,7 +203,7 @@ def intersect_pair_kernel(
     CPB = b2[2 * ma + mb : 2 * ma + 2 * mb]
     VPA = b1[2 * ma + 2 * mb : 3 * ma + 2 * mb]
     VPB = b1[3 * ma + 2 * mb : 3 * ma + 3 * mb]
-    ends: cython.double[:, :] = np.empty((8, 3))
+    ends: cython.double[:, :] = b3[3 * ma + 3 * mb : 3 * ma + 3 * mb + 8]
     nend = 0
     # cheap rejection: an end point farther than tol outside the other curve's two fat lines
     fa0 = fat_line_kernel(CA, False)
@@ -267,7 +271,7 @@ def intersect_pair_kernel(
                 nend += 1
 
     # ---------------------------------------------------------------- overlaps
-    ov: cython.double[:, :] = np.empty((4, 4))
+    ov: cython.double[:, :] = b4[0:4]
     nov: cython.Py_ssize_t = 0
     used: cython.uchar[:] = np.zeros(8, dtype=np.uint8)
     nsamp = max(24, na * nb + 4)
@@ -295,15 +299,15 @@ def intersect_pair_kernel(
             break
 
     # ---------------------------------------------------------------- clipping
-    stack: cython.double[:, :] = np.empty((64, 4))
+    stack: cython.double[:, :] = b4[4:68]
     stack[0, 0] = 0.0
     stack[0, 1] = 1.0
     stack[0, 2] = 0.0
     stack[0, 3] = 1.0
     nstack = 1
-    cands: cython.double[:, :] = np.empty((16, 4))
+    cands: cython.double[:, :] = b4[68:84]
     ncand: cython.Py_ssize_t = 0
-    unres: cython.double[:, :] = np.empty((4, 4))
+    unres: cython.double[:, :] = b4[84:88]
     nunres: cython.Py_ssize_t = 0
     # candidate boxes: 1e-7 of the curves' own extent, which for an ill-conditioned curve
     # (Chebyshev-like, polygon 1e9 times its curve) is far below the frame's size; a box of
@@ -462,7 +466,8 @@ def intersect_pair_kernel(
         label[i] = li
 
     # points found: (t, u, dist, kind, priority)
-    pts: cython.double[:, :] = np.empty((8 + ncand, 5))
+    b5: cython.double[:, :] = np.empty((8 + ncand + ncand + 4, 5))  # pts, then roots (3 columns)
+    pts: cython.double[:, :] = b5[0 : 8 + ncand]
     npts = 0
     for k in range(nend):
         pts = _room(pts, npts + 1)
@@ -472,10 +477,10 @@ def intersect_pair_kernel(
         pts[npts, 3] = -1.0  # kind decided below
         pts[npts, 4] = 2.0  # end points win merges
         npts += 1
-    roots: cython.double[:, :] = np.empty((ncand + 4, 3))
-    da: cython.double[:, :] = np.empty((ma, 6))
-    db: cython.double[:, :] = np.empty((mb, 6))
-    seeds: cython.double[:, :] = np.empty((16, 2))  # grown per cluster when needed
+    roots: cython.double[:, :] = b5[8 + ncand : 8 + ncand + ncand + 4, 0:3]
+    da: cython.double[:, :] = b6[0:ma]
+    db: cython.double[:, :] = b6[ma : ma + mb]
+    seeds: cython.double[:, :] = b2[2 * ma + 2 * mb : 2 * ma + 2 * mb + 16]  # grown per cluster if needed
     for root_label in range(ncand):
         if label[root_label] != root_label:
             continue
