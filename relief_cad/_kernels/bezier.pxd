@@ -7,3 +7,4 @@ cpdef (double, double, double, double, double, double) _eval(const double[:, :] 
 cpdef (double, double, double) _frame(const double[:, :] PA, const double[:, :] PB)
 cpdef void _curve_box_update(const double[:, :] P, const double[:] W, double[:] box)
 cpdef object _homog(const double[:, :] P, const double[:] W, double cx, double cy, double scale)
+cpdef void _homog_into(const double[:, :] P, const double[:] W, double cx, double cy, double scale, double[:, :] H) noexcept

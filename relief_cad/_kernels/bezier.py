@@ -245,17 +245,28 @@ def _homog(
     scale: cython.double,
 ):
     """Homogeneous rows of the curve in the frame, weights scaled to max 1."""
+    H = np.empty((P.shape[0], 3))
+    _homog_into(P, W, cx, cy, scale, H)
+    return H
+
+
+def _homog_into(
+    P: cython.const[cython.double][:, :],
+    W: cython.const[cython.double][:],
+    cx: cython.double,
+    cy: cython.double,
+    scale: cython.double,
+    H: cython.double[:, :],
+):
+    """:func:`_homog` into ``H`` (``m`` rows, 3 columns)."""
     i: cython.Py_ssize_t
     w: cython.double
     m: cython.Py_ssize_t = P.shape[0]
     wmax: cython.double = 0.0
     for i in range(m):
         wmax = max(wmax, W[i])
-    H = np.empty((m, 3))
-    Hv: cython.double[:, :] = H
     for i in range(m):
         w = W[i] / wmax
-        Hv[i, 0] = w * ((P[i, 0] - cx) * scale)
-        Hv[i, 1] = w * ((P[i, 1] - cy) * scale)
-        Hv[i, 2] = w
-    return H
+        H[i, 0] = w * ((P[i, 0] - cx) * scale)
+        H[i, 1] = w * ((P[i, 1] - cy) * scale)
+        H[i, 2] = w

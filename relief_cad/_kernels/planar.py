@@ -14,7 +14,7 @@ import cython
 import numpy as np
 from cython.cimports.libc.math import hypot
 
-from .bezier import _cartesian, _curve_box_update, _eval, _frame, _grow, _homog, _segment
+from .bezier import _cartesian, _curve_box_update, _eval, _frame, _grow, _homog_into, _segment
 from .certify import _polish_dd
 from .clip import clip_range_kernel, fat_line_kernel
 from .constants import _EPS, _ROUND, _SPLIT_RATIO, KIND_CROSSING, KIND_OVERLAP, KIND_TANGENT, KIND_UNRESOLVED
@@ -167,21 +167,29 @@ def intersect_pair_kernel(
         yhb = max(yhb, PB[i, 1])
     if xla > xhb + tol or xlb > xha + tol or yla > yhb + tol or ylb > yha + tol:
         return res, nres
+    # one allocation for the curves in the frame and all scratch arrays (each allocation costs
+    # about a microsecond): blocks of rows of a 6-column buffer, viewed as arrays of 1 to 6
+    # columns; an array that must grow is replaced by a larger copy (see _room)
+    n3 = 3 * ma + 3 * mb + 8
+    n2 = 2 * ma + 2 * mb + 16
+    n1 = 3 * ma + 3 * mb
+    n4 = 88
+    scratch: cython.double[:, :] = np.empty((ma + mb + n3 + n2 + n1 + n4 + ma + mb, 6))
+    r0 = ma + mb
+    HA: cython.double[:, :] = scratch[0:ma, 0:3]
+    HB: cython.double[:, :] = scratch[ma:r0, 0:3]
+    b3: cython.double[:, :] = scratch[r0 : r0 + n3, 0:3]
+    b2: cython.double[:, :] = scratch[r0 + n3 : r0 + n3 + n2, 0:2]
+    b1: cython.double[:] = scratch[r0 + n3 + n2 : r0 + n3 + n2 + n1, 0]
+    b4: cython.double[:, :] = scratch[r0 + n3 + n2 + n1 : r0 + n3 + n2 + n1 + n4, 0:4]
+    b6: cython.double[:, :] = scratch[r0 + n3 + n2 + n1 + n4 :, :]
     cx, cy, scale = _frame(PA, PB)
-    HA: cython.double[:, :] = _homog(PA, WA, cx, cy, scale)
-    HB: cython.double[:, :] = _homog(PB, WB, cx, cy, scale)
+    _homog_into(PA, WA, cx, cy, scale, HA)
+    _homog_into(PB, WB, cx, cy, scale, HB)
     tl = tol * scale
     if not tl > 0.0:
         tl = 1e-300
     inv = 1.0 / scale
-    # one allocation per column count for all scratch arrays (leading-axis slices stay C-contiguous)
-    # (and the small fixed-size arrays of the steps below: each allocation costs about a
-    # microsecond; an array that must grow is replaced by a larger copy, see _room)
-    b3: cython.double[:, :] = np.empty((3 * ma + 3 * mb + 8, 3))
-    b2: cython.double[:, :] = np.empty((2 * ma + 2 * mb + 16, 2))
-    b1: cython.double[:] = np.empty(3 * ma + 3 * mb)
-    b4: cython.double[:, :] = np.empty((88, 4))
-    b6: cython.double[:, :] = np.empty((ma + mb, 6))
     wa: cython.double[:, :] = b3[0:ma]
     wb: cython.double[:, :] = b3[ma : ma + mb]
     rnd: cython.double = _ROUND * max(1.0, 1.0)  # frame is normalised to |x| < 1
