@@ -81,8 +81,12 @@ def intersect_batch_kernel(
     curves; ``tol`` (p,) holds each pair's tolerance. Returns the result rows.
     """
     res = np.empty((max(16, 2 * pairs.shape[0]), RES_COLS))
-    nres = 0
+    nres: cython.Py_ssize_t = 0
     k: cython.Py_ssize_t
+    PA: cython.const[cython.double][:, :]
+    PB: cython.const[cython.double][:, :]
+    WA: cython.const[cython.double][:]
+    WB: cython.const[cython.double][:]
     for k in range(pairs.shape[0]):
         ia = pairs[k, 0]
         ib = pairs[k, 1]

@@ -13,6 +13,8 @@ import math
 import cython
 import numpy as np
 
+_INF = cython.declare(cython.double, math.inf)  # a C constant (``math.inf`` is a Python lookup)
+
 
 def _grow(arr, n):
     """Return ``arr`` with room for at least ``n`` rows (copying when it must grow)."""
@@ -28,7 +30,11 @@ def _segment(
     H: cython.const[cython.double][:, :], t0: cython.double, t1: cython.double, out: cython.double[:, :]
 ):
     """Homogeneous control points of the sub-curve on ``[t0, t1]`` into ``out``."""
-    m = H.shape[0]
+    i: cython.Py_ssize_t
+    r: cython.Py_ssize_t
+    s: cython.double
+    tt: cython.double
+    m: cython.Py_ssize_t = H.shape[0]
     n = m - 1
     for i in range(m):
         out[i, 0] = H[i, 0]
@@ -56,15 +62,20 @@ def _cartesian(S: cython.double[:, :], P: cython.double[:, :], W: cython.double[
 
     Returns the bounding box ``(xlo, xhi, ylo, yhi)`` of the points.
     """
-    m = S.shape[0]
-    wmax = 0.0
+    i: cython.Py_ssize_t
+    w: cython.double
+    iw: cython.double
+    x: cython.double
+    y: cython.double
+    m: cython.Py_ssize_t = S.shape[0]
+    wmax: cython.double = 0.0
     for i in range(m):
         if S[i, 2] > wmax:
             wmax = S[i, 2]
-    xlo = math.inf
-    xhi = -math.inf
-    ylo = math.inf
-    yhi = -math.inf
+    xlo: cython.double = _INF
+    xhi: cython.double = -_INF
+    ylo: cython.double = _INF
+    yhi: cython.double = -_INF
     iwmax = 1.0 / wmax
     for i in range(m):
         w = S[i, 2]
@@ -86,9 +97,12 @@ def _eval(H: cython.const[cython.double][:, :], t: cython.double, wk: cython.dou
 
     Returns ``(x, y, dx, dy, ddx, ddy)``; ``wk`` is scratch of ``H``'s shape.
     """
-    m = H.shape[0]
-    n = m - 1
-    s = 1.0 - t
+    i: cython.Py_ssize_t
+    r: cython.Py_ssize_t
+    m: cython.Py_ssize_t = H.shape[0]
+    n: cython.Py_ssize_t = m - 1
+    c: cython.Py_ssize_t
+    s: cython.double = 1.0 - t
     if n == 1:
         vx = s * H[0, 0] + t * H[1, 0]
         vy = s * H[0, 1] + t * H[1, 1]
@@ -136,11 +150,16 @@ def _eval(H: cython.const[cython.double][:, :], t: cython.double, wk: cython.dou
 
 def _frame(PA: cython.const[cython.double][:, :], PB: cython.const[cython.double][:, :]):
     """Exact translation ``(cx, cy)`` and power-of-two scale of the joint frame."""
-    cx = 0.0
-    cy = 0.0
+    i: cython.Py_ssize_t
+    k: cython.Py_ssize_t
+    lo: cython.double
+    hi: cython.double
+    c: cython.double
+    cx: cython.double = 0.0
+    cy: cython.double = 0.0
     for k in range(2):
-        lo = math.inf
-        hi = -math.inf
+        lo = _INF
+        hi = -_INF
         for i in range(PA.shape[0]):
             lo = min(lo, PA[i, k])
             hi = max(hi, PA[i, k])
@@ -157,12 +176,12 @@ def _frame(PA: cython.const[cython.double][:, :], PB: cython.const[cython.double
             cx = c
         else:
             cy = c
-    big = 0.0
+    big: cython.double = 0.0
     for i in range(PA.shape[0]):
         big = max(big, abs(PA[i, 0] - cx), abs(PA[i, 1] - cy))
     for i in range(PB.shape[0]):
         big = max(big, abs(PB[i, 0] - cx), abs(PB[i, 1] - cy))
-    scale = 1.0
+    scale: cython.double = 1.0
     if big > 0.0:
         e = max(math.frexp(big)[1], -1000)  # keep the scale finite for subnormal inputs
         scale = math.ldexp(1.0, -e)
@@ -190,9 +209,16 @@ def _curve_box_update(
     Casteljau: the curve's own extent, not its control polygon's (which can be far
     larger for ill-conditioned curves).
     """
-    m = P.shape[0]
-    d = P.shape[1]
-    ns = 2 * m + 1
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    k: cython.Py_ssize_t
+    r: cython.Py_ssize_t
+    t: cython.double
+    s: cython.double
+    x: cython.double
+    m: cython.Py_ssize_t = P.shape[0]
+    d: cython.Py_ssize_t = P.shape[1]
+    ns: cython.Py_ssize_t = 2 * m + 1
     wk: cython.double[:, :] = np.empty((m, d + 1))  # typed: numpy indexing here cost 0.1 s at degree 32
     for k in range(ns):
         t = k / (ns - 1.0)
@@ -219,15 +245,28 @@ def _homog(
     scale: cython.double,
 ):
     """Homogeneous rows of the curve in the frame, weights scaled to max 1."""
-    m = P.shape[0]
-    wmax = 0.0
+    H = np.empty((P.shape[0], 3))
+    _homog_into(P, W, cx, cy, scale, H)
+    return H
+
+
+def _homog_into(
+    P: cython.const[cython.double][:, :],
+    W: cython.const[cython.double][:],
+    cx: cython.double,
+    cy: cython.double,
+    scale: cython.double,
+    H: cython.double[:, :],
+):
+    """:func:`_homog` into ``H`` (``m`` rows, 3 columns)."""
+    i: cython.Py_ssize_t
+    w: cython.double
+    m: cython.Py_ssize_t = P.shape[0]
+    wmax: cython.double = 0.0
     for i in range(m):
         wmax = max(wmax, W[i])
-    H = np.empty((m, 3))
-    Hv: cython.double[:, :] = H
     for i in range(m):
         w = W[i] / wmax
-        Hv[i, 0] = w * ((P[i, 0] - cx) * scale)
-        Hv[i, 1] = w * ((P[i, 1] - cy) * scale)
-        Hv[i, 2] = w
-    return H
+        H[i, 0] = w * ((P[i, 0] - cx) * scale)
+        H[i, 1] = w * ((P[i, 1] - cy) * scale)
+        H[i, 2] = w

@@ -135,7 +135,7 @@ def _polish_dd(
             return t, u, False
         nt = min(1.0, max(0.0, t + dt))
         nu = min(1.0, max(0.0, u + du))
-        small = abs(dt) <= 4e-16 and abs(du) <= 4e-16
+        small: cython.bint = abs(dt) <= 4e-16 and abs(du) <= 4e-16
         t = nt
         u = nu
         if small:

@@ -13,6 +13,8 @@ import math
 import cython
 from cython.cimports.libc.math import hypot, sqrt
 
+_INF = cython.declare(cython.double, math.inf)  # a C constant (``math.inf`` is a Python lookup)
+
 
 def fat_line_kernel(P: cython.const[cython.double][:, :], perpendicular: cython.bint):
     """Fat line ``(nx, ny, c, dmin, dmax)`` of control points ``P`` (not widened).
@@ -24,16 +26,20 @@ def fat_line_kernel(P: cython.const[cython.double][:, :], perpendicular: cython.
     direction. ``perpendicular`` swaps in the perpendicular direction (the fat line
     bounding the curve *along* its chord).
     """
-    m = P.shape[0]
-    n = m - 1
+    i: cython.Py_ssize_t
+    m: cython.Py_ssize_t = P.shape[0]
+    n: cython.Py_ssize_t = m - 1
+    nx: cython.double
+    ny: cython.double
+    d: cython.double
     x0 = P[0, 0]
     y0 = P[0, 1]
     ex = P[n, 0] - x0
     ey = P[n, 1] - y0
     chord = hypot(ex, ey)
-    far = 0.0
-    fx = 0.0
-    fy = 0.0
+    far: cython.double = 0.0
+    fx: cython.double = 0.0
+    fy: cython.double = 0.0
     for i in range(1, m):
         ddx = P[i, 0] - x0
         ddy = P[i, 1] - y0
@@ -57,8 +63,8 @@ def fat_line_kernel(P: cython.const[cython.double][:, :], perpendicular: cython.
         nx = -ey / chord
         ny = ex / chord
     c = -(nx * x0 + ny * y0)
-    dmin = math.inf
-    dmax = -math.inf
+    dmin: cython.double = _INF
+    dmax: cython.double = -_INF
     for i in range(m):
         d = nx * P[i, 0] + ny * P[i, 1] + c
         dmin = min(dmin, d)
@@ -71,10 +77,17 @@ def hull_range_kernel(e: cython.double[:]):
 
     Returns ``(lo, hi)``; ``lo > hi`` means the hull lies entirely below zero.
     """
-    m = e.shape[0] - 1
-    h = 1.0 / m
-    lo = math.inf
-    hi = -math.inf
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    ei: cython.double
+    ej: cython.double
+    si: cython.double
+    sj: cython.double
+    s: cython.double
+    m: cython.Py_ssize_t = e.shape[0] - 1
+    h: cython.double = 1.0 / cython.cast(cython.double, m)
+    lo: cython.double = _INF
+    hi: cython.double = -_INF
     for j in range(m + 1):
         if e[j] >= 0.0:
             sj = j * h
@@ -123,7 +136,12 @@ def clip_range_kernel(
     bounded by the convex hull of its Bézier function. ``e`` is scratch of length
     ``n + 1``. Returns ``lo > hi`` when the curve cannot meet the strip.
     """
-    m = P.shape[0]
+    j: cython.Py_ssize_t
+    lo1: cython.double
+    hi1: cython.double
+    lo2: cython.double
+    hi2: cython.double
+    m: cython.Py_ssize_t = P.shape[0]
     for j in range(m):
         e[j] = W[j] * (nx * P[j, 0] + ny * P[j, 1] + c - dmin)
     lo1, hi1 = hull_range_kernel(e)

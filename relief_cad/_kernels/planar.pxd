@@ -1,3 +1,9 @@
-# pure-Python mode: the helpers planar.py imports are called as C functions (see bezier.pxd, clip.pxd)
-from relief_cad._kernels.bezier cimport _cartesian, _eval, _segment
+# pure-Python mode: the helpers planar.py imports are called as C functions (see bezier.pxd, clip.pxd,
+# polish.pxd, certify.pxd)
+from relief_cad._kernels.bezier cimport _cartesian, _curve_box_update, _eval, _frame, _homog_into, _segment
+from relief_cad._kernels.certify cimport _polish_dd
 from relief_cad._kernels.clip cimport clip_range_kernel, fat_line_kernel
+from relief_cad._kernels.polish cimport _angle_sin, _closest, _coincide, _local_dist, _newton, _point_on
+
+# the pair driver, called as a C function by batch.py (space.py calls it through Python)
+cpdef tuple intersect_pair_kernel(const double[:, :] PA, const double[:] WA, const double[:, :] PB, const double[:] WB, double tol, long long budget, double pair, object res, Py_ssize_t nres)

@@ -14,23 +14,28 @@ import cython
 import numpy as np
 from cython.cimports.libc.math import hypot
 
-from .bezier import _cartesian, _curve_box_update, _eval, _frame, _grow, _homog, _segment
+from .bezier import _cartesian, _curve_box_update, _eval, _frame, _grow, _homog_into, _segment
 from .certify import _polish_dd
 from .clip import clip_range_kernel, fat_line_kernel
 from .constants import _EPS, _ROUND, _SPLIT_RATIO, KIND_CROSSING, KIND_OVERLAP, KIND_TANGENT, KIND_UNRESOLVED
 from .polish import _angle_sin, _closest, _coincide, _local_dist, _newton, _point_on
 
+_INF = cython.declare(cython.double, math.inf)  # a C constant (``math.inf`` is a Python lookup)
 
+
+@cython.cfunc
+@cython.exceptval(check=False)
 def _in_overlap(
-    ov,
+    ov: cython.double[:, :],
     nov: cython.Py_ssize_t,
     t0: cython.double,
     t1: cython.double,
     u0: cython.double,
     u1: cython.double,
     margin: cython.double,
-):
+) -> cython.bint:
     """True when the box lies inside one overlap's parameter rectangle (plus margin)."""
+    k: cython.Py_ssize_t
     for k in range(nov):
         a0 = ov[k, 0] - margin
         a1 = ov[k, 1] + margin
@@ -41,8 +46,30 @@ def _in_overlap(
     return False
 
 
-def _add(res, nres, pair, kind, t, u, t1, u1, x, y, dist):
-    res = _grow(res, nres + 1)
+@cython.cfunc
+def _room(a: cython.double[:, :], n: cython.Py_ssize_t) -> cython.double[:, :]:
+    """``a`` itself when it has at least ``n`` rows, else a larger copy (:func:`._grow`)."""
+    if n <= a.shape[0]:
+        return a
+    return _grow(np.asarray(a), n)
+
+
+@cython.cfunc
+@cython.exceptval(check=False)
+def _put(
+    res: cython.double[:, :],
+    nres: cython.Py_ssize_t,
+    pair: cython.double,
+    kind: cython.double,
+    t: cython.double,
+    u: cython.double,
+    t1: cython.double,
+    u1: cython.double,
+    x: cython.double,
+    y: cython.double,
+    dist: cython.double,
+) -> cython.void:
+    """Write result row ``nres`` (``res`` has room for it)."""
     res[nres, 0] = pair
     res[nres, 1] = kind
     res[nres, 2] = t
@@ -52,7 +79,6 @@ def _add(res, nres, pair, kind, t, u, t1, u1, x, y, dist):
     res[nres, 6] = x
     res[nres, 7] = y
     res[nres, 8] = dist
-    return res, nres + 1
 
 
 def intersect_pair_kernel(
@@ -61,10 +87,10 @@ def intersect_pair_kernel(
     PB: cython.const[cython.double][:, :],
     WB: cython.const[cython.double][:],
     tol: cython.double,
-    budget,
-    pair,
+    budget: cython.longlong,
+    pair: cython.double,
     res,
-    nres,
+    nres: cython.Py_ssize_t,
 ):
     """Intersect two planar rational Bézier curves; append result rows to ``res``.
 
@@ -73,10 +99,57 @@ def intersect_pair_kernel(
     budget, the pair index written in column 0, and the result array with its row
     count. Returns ``(res, nres)``.
     """
-    ma = PA.shape[0]
-    mb = PB.shape[0]
-    na = ma - 1
-    nb = mb - 1
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    k: cython.Py_ssize_t
+    q: cython.Py_ssize_t
+    ma: cython.Py_ssize_t = PA.shape[0]
+    mb: cython.Py_ssize_t = PB.shape[0]
+    na: cython.Py_ssize_t = ma - 1
+    nb: cython.Py_ssize_t = mb - 1
+    # constants.py is plain Python (its names are Python objects): C copies for the loops
+    eps: cython.double = _EPS
+    split_ratio: cython.double = _SPLIT_RATIO
+    k_crossing: cython.double = KIND_CROSSING
+    k_tangent: cython.double = KIND_TANGENT
+    k_overlap: cython.double = KIND_OVERLAP
+    k_unresolved: cython.double = KIND_UNRESOLVED
+    rv: cython.double[:, :] = res  # the result rows (``res`` is re-wrapped when it grows)
+    # scratch views (slices of three buffers) and locals that type inference leaves as objects
+    CA: cython.double[:, :]
+    CB: cython.double[:, :]
+    CPA: cython.double[:, :]
+    CPB: cython.double[:, :]
+    SA: cython.double[:, :]
+    SB: cython.double[:, :]
+    VA: cython.double[:]
+    VB: cython.double[:]
+    VPA: cython.double[:]
+    VPB: cython.double[:]
+    ea: cython.double[:]
+    eb: cython.double[:]
+    d0: cython.double
+    d1: cython.double
+    px: cython.double
+    py: cython.double
+    qx: cython.double
+    qy: cython.double
+    t0: cython.double
+    t1: cython.double
+    u0: cython.double
+    u1: cython.double
+    nt0: cython.double
+    nt1: cython.double
+    nu0: cython.double
+    nu1: cython.double
+    tm: cython.double
+    um: cython.double
+    w: cython.double
+    wt: cython.double
+    wu: cython.double
+    perp: cython.bint
+    wide: cython.bint
+    distinct: cython.bint
     # disjoint bounding boxes (widened by tol): nothing to do
     xla = xha = PA[0, 0]
     yla = yha = PA[0, 1]
@@ -94,20 +167,32 @@ def intersect_pair_kernel(
         yhb = max(yhb, PB[i, 1])
     if xla > xhb + tol or xlb > xha + tol or yla > yhb + tol or ylb > yha + tol:
         return res, nres
+    # one allocation for the curves in the frame and all scratch arrays (each allocation costs
+    # about a microsecond): blocks of rows of a 6-column buffer, viewed as arrays of 1 to 6
+    # columns; an array that must grow is replaced by a larger copy (see _room)
+    n3 = 3 * ma + 3 * mb + 8
+    n2 = 2 * ma + 2 * mb + 16
+    n1 = 3 * ma + 3 * mb
+    n4 = 88
+    scratch: cython.double[:, :] = np.empty((ma + mb + n3 + n2 + n1 + n4 + ma + mb, 6))
+    r0 = ma + mb
+    HA: cython.double[:, :] = scratch[0:ma, 0:3]
+    HB: cython.double[:, :] = scratch[ma:r0, 0:3]
+    b3: cython.double[:, :] = scratch[r0 : r0 + n3, 0:3]
+    b2: cython.double[:, :] = scratch[r0 + n3 : r0 + n3 + n2, 0:2]
+    b1: cython.double[:] = scratch[r0 + n3 + n2 : r0 + n3 + n2 + n1, 0]
+    b4: cython.double[:, :] = scratch[r0 + n3 + n2 + n1 : r0 + n3 + n2 + n1 + n4, 0:4]
+    b6: cython.double[:, :] = scratch[r0 + n3 + n2 + n1 + n4 :, :]
     cx, cy, scale = _frame(PA, PB)
-    HA = _homog(PA, WA, cx, cy, scale)
-    HB = _homog(PB, WB, cx, cy, scale)
+    _homog_into(PA, WA, cx, cy, scale, HA)
+    _homog_into(PB, WB, cx, cy, scale, HB)
     tl = tol * scale
     if not tl > 0.0:
         tl = 1e-300
     inv = 1.0 / scale
-    # one allocation per column count for all scratch arrays (leading-axis slices stay C-contiguous)
-    b3 = np.empty((3 * ma + 3 * mb, 3))
-    b2 = np.empty((2 * ma + 2 * mb, 2))
-    b1 = np.empty(3 * ma + 3 * mb)
-    wa = b3[0:ma]
-    wb = b3[ma : ma + mb]
-    rnd = _ROUND * max(1.0, 1.0)  # frame is normalised to |x| < 1
+    wa: cython.double[:, :] = b3[0:ma]
+    wb: cython.double[:, :] = b3[ma : ma + mb]
+    rnd: cython.double = _ROUND * max(1.0, 1.0)  # frame is normalised to |x| < 1
 
     # ---------------------------------------------------------------- end points
     # candidates (t, u, dist) from each end point's projection on the other curve;
@@ -126,7 +211,7 @@ def intersect_pair_kernel(
     CPB = b2[2 * ma + mb : 2 * ma + 2 * mb]
     VPA = b1[2 * ma + 2 * mb : 3 * ma + 2 * mb]
     VPB = b1[3 * ma + 2 * mb : 3 * ma + 3 * mb]
-    ends = np.empty((8, 3))
+    ends: cython.double[:, :] = b3[3 * ma + 3 * mb : 3 * ma + 3 * mb + 8]
     nend = 0
     # cheap rejection: an end point farther than tol outside the other curve's two fat lines
     fa0 = fat_line_kernel(CA, False)
@@ -154,9 +239,10 @@ def intersect_pair_kernel(
             py = CA[na * which, 1]
             uu, dd = _point_on(HB, px, py, tl, SB, CPB, VPB, eb, wb)
             # snap to an end point of b when that end also is within tol
-            for ue in (0.0, 1.0):
-                qx = CB[int(ue) * nb, 0]
-                qy = CB[int(ue) * nb, 1]
+            for iend in range(2):
+                ue = float(iend)
+                qx = CB[iend * nb, 0]
+                qy = CB[iend * nb, 1]
                 de = hypot(qx - px, qy - py)
                 if de <= tl and (abs(uu - ue) < 1e-6 or de <= dd):
                     uu = ue
@@ -167,9 +253,10 @@ def intersect_pair_kernel(
             px = CB[nb * (which - 2), 0]
             py = CB[nb * (which - 2), 1]
             tt, dd = _point_on(HA, px, py, tl, SA, CPA, VPA, ea, wa)
-            for te in (0.0, 1.0):
-                qx = CA[int(te) * na, 0]
-                qy = CA[int(te) * na, 1]
+            for iend in range(2):
+                te = float(iend)
+                qx = CA[iend * na, 0]
+                qy = CA[iend * na, 1]
                 de = hypot(qx - px, qy - py)
                 if de <= tl and (abs(tt - te) < 1e-6 or de <= dd):
                     tt = te
@@ -192,9 +279,9 @@ def intersect_pair_kernel(
                 nend += 1
 
     # ---------------------------------------------------------------- overlaps
-    ov = np.empty((4, 4))
-    nov = 0
-    used = np.zeros(8, dtype=np.bool_)
+    ov: cython.double[:, :] = b4[0:4]
+    nov: cython.Py_ssize_t = 0
+    used: cython.uchar[:] = np.zeros(8, dtype=np.uint8)
     nsamp = max(24, na * nb + 4)
     for i in range(nend):
         for j in range(i + 1, nend):
@@ -220,16 +307,16 @@ def intersect_pair_kernel(
             break
 
     # ---------------------------------------------------------------- clipping
-    stack = np.empty((64, 4))
+    stack: cython.double[:, :] = b4[4:68]
     stack[0, 0] = 0.0
     stack[0, 1] = 1.0
     stack[0, 2] = 0.0
     stack[0, 3] = 1.0
     nstack = 1
-    cands = np.empty((16, 4))
-    ncand = 0
-    unres = np.empty((4, 4))
-    nunres = 0
+    cands: cython.double[:, :] = b4[68:84]
+    ncand: cython.Py_ssize_t = 0
+    unres: cython.double[:, :] = b4[84:88]
+    nunres: cython.Py_ssize_t = 0
     # candidate boxes: 1e-7 of the curves' own extent, which for an ill-conditioned curve
     # (Chebyshev-like, polygon 1e9 times its curve) is far below the frame's size; a box of
     # 1e-7 frame units could then hold the whole curve and all its crossings (issue 12)
@@ -239,14 +326,14 @@ def intersect_pair_kernel(
         max(PA[0, 1], PA[na, 1], PB[0, 1], PB[nb, 1]) - min(PA[0, 1], PA[na, 1], PB[0, 1], PB[nb, 1]),
     )
     if ext < 0.25:  # the end points span less than a quarter of the frame: sample the curves
-        box: cython.double[:] = np.array([math.inf, -math.inf, math.inf, -math.inf])
+        box: cython.double[:] = np.array([_INF, -_INF, _INF, -_INF])
         _curve_box_update(PA, WA, box)
         _curve_box_update(PB, WB, box)
         ext = scale * hypot(box[1] - box[0], box[3] - box[2])
         if ext < 0.25:
             epsb = 4e-7 * ext
     epsb = max(tl, epsb)
-    iters = 0
+    iters: cython.longlong = 0
     margin = 1e-9
     while nstack > 0:
         nstack -= 1
@@ -259,7 +346,7 @@ def intersect_pair_kernel(
         while True:
             iters += 1
             if iters > budget:
-                unres = _grow(unres, nunres + 1)
+                unres = _room(unres, nunres + 1)
                 unres[nunres, 0] = t0
                 unres[nunres, 1] = t1
                 unres[nunres, 2] = u0
@@ -279,7 +366,7 @@ def intersect_pair_kernel(
             exa = hypot(axh - axl, ayh - ayl)
             exb = hypot(bxh - bxl, byh - byl)
             if (exa <= epsb and exb <= epsb) or (t1 - t0 <= 1e-15 and u1 - u0 <= 1e-15):
-                cands = _grow(cands, ncand + 1)
+                cands = _room(cands, ncand + 1)
                 cands[ncand, 0] = t0
                 cands[ncand, 1] = t1
                 cands[ncand, 2] = u0
@@ -291,7 +378,8 @@ def intersect_pair_kernel(
             empty = False
             wida = 0.0
             widb = 0.0
-            for perp in (False, True):
+            for iperp in range(2):
+                perp = iperp == 1  # the fat lines along the chords, then across them
                 # clip b against a's fat line
                 nx, ny, c, dmin, dmax = fat_line_kernel(CA, perp)
                 if not perp:
@@ -324,23 +412,23 @@ def intersect_pair_kernel(
                     t1 = max(nt0, nt1)
                     _segment(HA, t0, t1, SA)
                     axl, axh, ayl, ayh = _cartesian(SA, CA, VA)
-                if (t1 - t0) <= _SPLIT_RATIO * wt or (u1 - u0) <= _SPLIT_RATIO * wu:
+                if (t1 - t0) <= split_ratio * wt or (u1 - u0) <= split_ratio * wu:
                     break
             if empty:
                 break
-            if (t1 - t0) <= _SPLIT_RATIO * wt or (u1 - u0) <= _SPLIT_RATIO * wu:
+            if (t1 - t0) <= split_ratio * wt or (u1 - u0) <= split_ratio * wu:
                 fresh = True
                 continue
             # stalled: a flat band contact, or split the larger sub-curve
             if wida <= tl and widb <= tl and exa <= 4.0 * exb + tl and exb <= 4.0 * exa + tl:
-                cands = _grow(cands, ncand + 1)
+                cands = _room(cands, ncand + 1)
                 cands[ncand, 0] = t0
                 cands[ncand, 1] = t1
                 cands[ncand, 2] = u0
                 cands[ncand, 3] = u1
                 ncand += 1
                 break
-            stack = _grow(stack, nstack + 2)
+            stack = _room(stack, nstack + 2)
             if (exa >= exb and t1 - t0 > 1e-15) or u1 - u0 <= 1e-15:
                 tm = 0.5 * (t0 + t1)
                 stack[nstack, 0] = tm
@@ -360,12 +448,12 @@ def intersect_pair_kernel(
         if iters > budget:
             while nstack > 0:
                 nstack -= 1
-                unres = _grow(unres, nunres + 1)
+                unres = _room(unres, nunres + 1)
                 unres[nunres, :] = stack[nstack, :]
                 nunres += 1
 
     # ---------------------------------------------------------------- clusters
-    label = np.arange(ncand)
+    label: cython.Py_ssize_t[:] = np.arange(ncand, dtype=np.intp)
     for i in range(ncand):
         for j in range(i + 1, ncand):
             gt = max(cands[i, 0], cands[j, 0]) - min(cands[i, 1], cands[j, 1])
@@ -386,19 +474,21 @@ def intersect_pair_kernel(
         label[i] = li
 
     # points found: (t, u, dist, kind, priority)
-    pts = np.empty((8 + ncand, 5))
+    b5: cython.double[:, :] = np.empty((8 + ncand + ncand + 4, 5))  # pts, then roots (3 columns)
+    pts: cython.double[:, :] = b5[0 : 8 + ncand]
     npts = 0
     for k in range(nend):
-        pts = _grow(pts, npts + 1)
+        pts = _room(pts, npts + 1)
         pts[npts, 0] = ends[k, 0]
         pts[npts, 1] = ends[k, 1]
         pts[npts, 2] = ends[k, 2]
         pts[npts, 3] = -1.0  # kind decided below
         pts[npts, 4] = 2.0  # end points win merges
         npts += 1
-    roots = np.empty((ncand + 4, 3))
-    da = np.empty((ma, 6))
-    db = np.empty((mb, 6))
+    roots: cython.double[:, :] = b5[8 + ncand : 8 + ncand + ncand + 4, 0:3]
+    da: cython.double[:, :] = b6[0:ma]
+    db: cython.double[:, :] = b6[ma : ma + mb]
+    seeds: cython.double[:, :] = b2[2 * ma + 2 * mb : 2 * ma + 2 * mb + 16]  # grown per cluster if needed
     for root_label in range(ncand):
         if label[root_label] != root_label:
             continue
@@ -409,13 +499,13 @@ def intersect_pair_kernel(
                 nmem += 1
         stride = max(1, nmem // 24)
         nroots = 0
-        bestres = math.inf
+        bestres = _INF
         bt = 0.0
         bu = 0.0
-        ct0 = math.inf
-        ct1 = -math.inf
-        cu0 = math.inf
-        cu1 = -math.inf
+        ct0 = _INF
+        ct1 = -_INF
+        cu0 = _INF
+        cu1 = -_INF
         for i in range(ncand):
             if label[i] == root_label:
                 ct0 = min(ct0, cands[i, 0])
@@ -426,7 +516,7 @@ def intersect_pair_kernel(
         # near-tangency that may hold several roots) points along both diagonals
         wide = nmem >= 2 or ct1 - ct0 > 1e-6 or cu1 - cu0 > 1e-6
         nseed = (nmem + stride - 1) // stride + (10 if wide else 0)
-        seeds = np.empty((nseed, 2))
+        seeds = _room(seeds, nseed)
         ks = 0
         cnt = 0
         for i in range(ncand):
@@ -465,7 +555,7 @@ def intersect_pair_kernel(
                 _x, _y, bdx, bdy, _b2, _b3 = _eval(HB, u, wb)
                 sig = abs(adx * bdy - ady * bdx) / max(hypot(adx, ady), hypot(bdx, bdy), 1e-300)
                 cert = 1.0  # a well-conditioned root is trusted as is
-                if (na + nb) * _EPS > 1e-14 * sig:
+                if (na + nb) * eps > 1e-14 * sig:
                     cert = 0.0
                     t2, u2, ok = _polish_dd(HA, HB, t, u, wa, wb, da, db, 10)
                     if ok:
@@ -482,7 +572,7 @@ def intersect_pair_kernel(
                             roots[k, 2] = cert
                         break
                 if not dup:
-                    roots = _grow(roots, nroots + 1)
+                    roots = _room(roots, nroots + 1)
                     roots[nroots, 0] = t
                     roots[nroots, 1] = u
                     roots[nroots, 2] = cert
@@ -490,11 +580,11 @@ def intersect_pair_kernel(
         if nroots == 0:
             t, u, d = _closest(HA, HB, bt, bu, wa, wb, 60)
             if d <= tl:
-                pts = _grow(pts, npts + 1)
+                pts = _room(pts, npts + 1)
                 pts[npts, 0] = t
                 pts[npts, 1] = u
                 pts[npts, 2] = d
-                pts[npts, 3] = float(KIND_TANGENT)
+                pts[npts, 3] = k_tangent
                 pts[npts, 4] = 0.0
                 npts += 1
             continue
@@ -555,37 +645,37 @@ def intersect_pair_kernel(
                     break
             if j == i:
                 sn = _angle_sin(HA, HB, roots[i, 0], roots[i, 1], wa, wb)
-                kind = KIND_CROSSING
+                kind = k_crossing
                 if roots[i, 2] == 1.0:
                     # a certified (simple) root crosses, however small the angle
                     if sn < 1e-12:
-                        kind = KIND_TANGENT
+                        kind = k_tangent
                 elif nroots == 1 and sn < 1e-7:
-                    kind = KIND_TANGENT
+                    kind = k_tangent
                 elif sn < 1e-10:
-                    kind = KIND_TANGENT
-                pts = _grow(pts, npts + 1)
+                    kind = k_tangent
+                pts = _room(pts, npts + 1)
                 pts[npts, 0] = roots[i, 0]
                 pts[npts, 1] = roots[i, 1]
                 pts[npts, 2] = 0.0
-                pts[npts, 3] = float(kind)
+                pts[npts, 3] = kind
                 pts[npts, 4] = 1.0
                 npts += 1
             else:
                 t, u, d = _closest(
                     HA, HB, 0.5 * (roots[i, 0] + roots[j, 0]), 0.5 * (roots[i, 1] + roots[j, 1]), wa, wb, 60
                 )
-                pts = _grow(pts, npts + 1)
+                pts = _room(pts, npts + 1)
                 pts[npts, 0] = t
                 pts[npts, 1] = u
                 pts[npts, 2] = d
-                pts[npts, 3] = float(KIND_TANGENT)
+                pts[npts, 3] = k_tangent
                 pts[npts, 4] = 1.0
                 npts += 1
             i = j + 1
 
     # ---------------------------------------------------------------- dedupe + emit
-    keep = np.ones(npts, dtype=np.bool_)
+    keep: cython.uchar[:] = np.ones(npts, dtype=np.uint8)
     for i in range(npts):
         if not keep[i]:
             continue
@@ -612,8 +702,8 @@ def intersect_pair_kernel(
                 dt <= 1e-3
                 and du <= 1e-3
                 and (
-                    pts[i, 3] == KIND_TANGENT
-                    or pts[j, 3] == KIND_TANGENT
+                    pts[i, 3] == k_tangent
+                    or pts[j, 3] == k_tangent
                     or pts[i, 4] == 2.0
                     or pts[j, 4] == 2.0
                 )
@@ -648,38 +738,36 @@ def intersect_pair_kernel(
         # drop points on an overlap
         on = False
         for k in range(nov):
-            b0 = min(ov[k, 2], ov[k, 3])
-            b1 = max(ov[k, 2], ov[k, 3])
-            if ov[k, 0] - 1e-6 <= t <= ov[k, 1] + 1e-6 and b0 - 1e-6 <= u <= b1 + 1e-6:
+            ub0 = min(ov[k, 2], ov[k, 3])
+            ub1 = max(ov[k, 2], ov[k, 3])
+            if ov[k, 0] - 1e-6 <= t <= ov[k, 1] + 1e-6 and ub0 - 1e-6 <= u <= ub1 + 1e-6:
                 on = True
         if on:
             continue
         kf = pts[i, 3]
         if kf < 0.0:
             sn = _angle_sin(HA, HB, t, u, wa, wb)
-            kf = float(KIND_TANGENT) if sn < 1e-7 else float(KIND_CROSSING)
+            kf = k_tangent if sn < 1e-7 else k_crossing
         ax, ay, _a, _b, _c, _d = _eval(HA, t, wa)
         bx, by, _a, _b, _c, _d = _eval(HB, u, wb)
         dist = hypot(ax - bx, ay - by) * inv
         px = 0.5 * (ax + bx) * inv + cx
         py = 0.5 * (ay + by) * inv + cy
-        res, nres = _add(res, nres, pair, kf, t, u, t, u, px, py, dist)
+        if nres >= rv.shape[0]:
+            res = _grow(res, nres + 1)
+            rv = res
+        _put(rv, nres, pair, kf, t, u, t, u, px, py, dist)
+        nres += 1
     for k in range(nov):
-        res, nres = _add(
-            res, nres, pair, float(KIND_OVERLAP), ov[k, 0], ov[k, 2], ov[k, 1], ov[k, 3], 0.0, 0.0, 0.0
-        )
+        if nres >= rv.shape[0]:
+            res = _grow(res, nres + 1)
+            rv = res
+        _put(rv, nres, pair, k_overlap, ov[k, 0], ov[k, 2], ov[k, 1], ov[k, 3], 0.0, 0.0, 0.0)
+        nres += 1
     for k in range(nunres):
-        res, nres = _add(
-            res,
-            nres,
-            pair,
-            float(KIND_UNRESOLVED),
-            unres[k, 0],
-            unres[k, 2],
-            unres[k, 1],
-            unres[k, 3],
-            0.0,
-            0.0,
-            0.0,
-        )
+        if nres >= rv.shape[0]:
+            res = _grow(res, nres + 1)
+            rv = res
+        _put(rv, nres, pair, k_unresolved, unres[k, 0], unres[k, 2], unres[k, 1], unres[k, 3], 0.0, 0.0, 0.0)
+        nres += 1
     return res, nres

@@ -16,6 +16,8 @@ from cython.cimports.libc.math import hypot, sqrt
 from .bezier import _cartesian, _eval, _segment
 from .clip import clip_range_kernel, fat_line_kernel
 
+_INF = cython.declare(cython.double, math.inf)  # a C constant (``math.inf`` is a Python lookup)
+
 
 def _newton(
     HA: cython.const[cython.double][:, :],
@@ -32,7 +34,7 @@ def _newton(
     """
     bt = t
     bu = u
-    bres = math.inf
+    bres = _INF
     stall = 0
     for _ in range(iters):
         ax, ay, adx, ady, _a2, _a3 = _eval(HA, t, wa)
@@ -95,7 +97,14 @@ def _closest(
     fx = ax - bx
     fy = ay - by
     f2 = fx * fx + fy * fy
-    lam = 0.0
+    lam: cython.double = 0.0  # declared: inference gives up on ``lam = max(2.0 * lam, ...)``
+    nt: cython.double
+    nu: cython.double
+    dt: cython.double
+    du: cython.double
+    det: cython.double
+    a11: cython.double
+    a22: cython.double
     for _ in range(iters):
         g1 = fx * adx + fy * ady
         g2 = -(fx * bdx + fy * bdy)
@@ -155,32 +164,34 @@ def _point_on(
     ``tol`` around the point (cheap rejection), then projects by Newton.
     Returns ``(u, distance)`` with ``distance = inf`` when rejected.
     """
+    perp: cython.bint
     u0 = 0.0
     u1 = 1.0
     for _ in range(30):
         _segment(H, u0, u1, S)
         xl, xh, yl, yh = _cartesian(S, C, V)
         if px < xl - tol or px > xh + tol or py < yl - tol or py > yh + tol:
-            return 0.0, math.inf
+            return 0.0, _INF
         if hypot(xh - xl, yh - yl) <= tol:
             break
         w0 = u1 - u0
-        for perp in (False, True):
+        for iperp in range(2):
+            perp = iperp == 1  # the fat line along the chord, then across it
             nx, ny, c, _dmin, _dmax = fat_line_kernel(C, perp)
             dp = nx * px + ny * py + c
             lo, hi = clip_range_kernel(C, V, nx, ny, c, dp - tol, dp + tol, e)
             if lo > hi:
-                return 0.0, math.inf
+                return 0.0, _INF
             w = u1 - u0
             nu0 = u0 + lo * w
             u1 = max(nu0, u0 + hi * w)
             u0 = nu0
-            if perp is False:
+            if not perp:
                 _segment(H, u0, u1, S)
                 _cartesian(S, C, V)
         if u1 - u0 > 0.8 * w0:
             # stalled (several candidate stretches): sample the remaining range
-            best = math.inf
+            best = _INF
             bu = u0
             for k in range(17):
                 uu = u0 + (u1 - u0) * (k / 16.0)
@@ -323,10 +334,14 @@ def _coincide(
     """
     u = ua
     direction = 1.0 if ub > ua else -1.0
-    fwd = np.empty(nsamp + 1)
+    k: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    fwd: cython.double[:] = np.empty(nsamp + 1)
     fwd[0] = ua
     fwd[nsamp] = ub
     for k in range(1, nsamp):
+        # NOTE: compiled, k / nsamp below is C integer division (0 for 0 < k < nsamp), unlike plain
+        # Python; kept as it was (results bit-identical), to be fixed separately
         s = ta + (tb - ta) * (k / nsamp)
         px, py, _a, _b, _c, _d = _eval(HA, s, wa)
         uu = _local_proj(HB, px, py, u, wb)
