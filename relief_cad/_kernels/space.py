@@ -694,19 +694,21 @@ def _space_half(
 
 @cython.cfunc
 @cython.exceptval(check=False)
-def _space_box(H: cython.const[cython.double][:, :], box: cython.double[:]) -> cython.void:
-    """Box ``[lo x, lo y, lo z, hi x, hi y, hi z]`` of the control points (contains the curve)."""
+def _space_box(
+    H: cython.const[cython.double][:, :], lo: cython.double[:], hi: cython.double[:]
+) -> cython.void:
+    """Box ``lo``-``hi`` (x, y, z) of the control points (contains the curve)."""
     i: cython.Py_ssize_t
     j: cython.Py_ssize_t
     x: cython.double
     for j in range(3):
-        box[j] = _INF
-        box[3 + j] = -_INF
+        lo[j] = _INF
+        hi[j] = -_INF
     for i in range(H.shape[0]):
         for j in range(3):
             x = H[i, j] / H[i, 3]
-            box[j] = min(box[j], x)
-            box[3 + j] = max(box[3 + j], x)
+            lo[j] = min(lo[j], x)
+            hi[j] = max(hi[j], x)
 
 
 @cython.cfunc
@@ -720,35 +722,53 @@ def _copy_rows(src: cython.const[cython.double][:, :], dst: cython.double[:, ::1
 
 
 @cython.cfunc
+@cython.exceptval(check=False)
+def _push(
+    stack: cython.double[:, :, ::1],
+    top: cython.Py_ssize_t,
+    na: cython.Py_ssize_t,
+    HA: cython.double[:, ::1],
+    HB: cython.double[:, ::1],
+) -> cython.void:
+    """Store the pair (``HA``, ``HB``) in slot ``top`` of ``stack`` (a's rows first)."""
+    _copy_rows(HA, stack[top, :na])
+    _copy_rows(HB, stack[top, na:])
+
+
+@cython.cfunc
+@cython.exceptval(check=False)
 def _space_separated(
-    HA: cython.const[cython.double][:, :],
-    HB: cython.const[cython.double][:, :],
+    HA: cython.double[:, ::1],
+    HB: cython.double[:, ::1],
     tol: cython.double,
     max_depth: cython.int,
+    stack: cython.double[:, :, ::1],
+    depth: cython.int[::1],
+    work: cython.double[:, ::1],
 ) -> cython.bint:
     """True when boxes of sub-curves (halving both, depth <= max_depth) prove a gap wider than tol.
 
     A cheap pre-pass before the relief scheme: two space curves that stay apart need no
     projection at all (their projections may well cross). False means "not proven apart".
+    Scratch: ``stack`` (4 max_depth + 8, na + nb, 4), a pair of sub-curves per slot;
+    ``depth`` (4 max_depth + 8); ``work`` (2 na + 2 nb + max(na, nb) + 4 rows of 4).
     """
     na: cython.Py_ssize_t = HA.shape[0]
     nb: cython.Py_ssize_t = HB.shape[0]
     size: cython.Py_ssize_t = 4 * max_depth + 8
-    stack_a: cython.double[:, :, ::1] = np.empty((size, na, 4))
-    stack_b: cython.double[:, :, ::1] = np.empty((size, nb, 4))
-    depth: cython.int[::1] = np.empty(size, dtype=np.intc)
-    # scratch: the halves (la, ra | lb, rb), de Casteljau's rows, the two boxes
-    halves: cython.double[:, :, ::1] = np.empty((4, max(na, nb), 4))
-    la: cython.double[:, ::1] = halves[0, :na]
-    ra: cython.double[:, ::1] = halves[1, :na]
-    lb: cython.double[:, ::1] = halves[2, :nb]
-    rb: cython.double[:, ::1] = halves[3, :nb]
-    wk: cython.double[:, ::1] = np.empty((max(na, nb), 4))
-    boxes: cython.double[:, ::1] = np.empty((2, 6))
-    ba: cython.double[:] = boxes[0]
-    bb: cython.double[:] = boxes[1]
-    _copy_rows(HA, stack_a[0])
-    _copy_rows(HB, stack_b[0])
+    # the halves, de Casteljau's rows, the two boxes
+    la: cython.double[:, ::1] = work[0:na]
+    ra: cython.double[:, ::1] = work[na : 2 * na]
+    lb: cython.double[:, ::1] = work[2 * na : 2 * na + nb]
+    rb: cython.double[:, ::1] = work[2 * na + nb : 2 * na + 2 * nb]
+    o: cython.Py_ssize_t = 2 * na + 2 * nb
+    wk: cython.double[:, ::1] = work[o : o + max(na, nb)]
+    o += max(na, nb)
+    lo_a: cython.double[:] = work[o]
+    hi_a: cython.double[:] = work[o + 1]
+    lo_b: cython.double[:] = work[o + 2]
+    hi_b: cython.double[:] = work[o + 3]
+    _push(stack, 0, na, HA, HB)
     depth[0] = 0
     top: cython.Py_ssize_t = 1
     j: cython.Py_ssize_t
@@ -758,26 +778,22 @@ def _space_separated(
     while top > 0:
         top -= 1
         d = depth[top]
-        _space_box(stack_a[top], ba)
-        _space_box(stack_b[top], bb)
+        _space_box(stack[top, :na], lo_a, hi_a)
+        _space_box(stack[top, na:], lo_b, hi_b)
         apart = False
         for j in range(3):
-            if ba[j] > bb[3 + j] + tol or bb[j] > ba[3 + j] + tol:
+            if lo_a[j] > hi_b[j] + tol or lo_b[j] > hi_a[j] + tol:
                 apart = True
         if apart:
             continue
         if d >= max_depth or top + 4 > size:
             return False
-        _space_half(stack_a[top], la, ra, wk)
-        _space_half(stack_b[top], lb, rb, wk)
-        _copy_rows(la, stack_a[top])
-        _copy_rows(lb, stack_b[top])
-        _copy_rows(la, stack_a[top + 1])
-        _copy_rows(rb, stack_b[top + 1])
-        _copy_rows(ra, stack_a[top + 2])
-        _copy_rows(lb, stack_b[top + 2])
-        _copy_rows(ra, stack_a[top + 3])
-        _copy_rows(rb, stack_b[top + 3])
+        _space_half(stack[top, :na], la, ra, wk)
+        _space_half(stack[top, na:], lb, rb, wk)
+        _push(stack, top, na, la, lb)
+        _push(stack, top + 1, na, la, rb)
+        _push(stack, top + 2, na, ra, lb)
+        _push(stack, top + 3, na, ra, rb)
         for q in range(4):
             depth[top + q] = d + 1
         top += 4
@@ -832,13 +848,24 @@ def space_pair_kernel(
         for j in range(3):
             PB[i, j] = HB0[i, j] / HB0[i, 3]
     big0: cython.double = max(_abs_max(PA), _abs_max(PB))
-    ref_arr = np.empty(3)
-    ref: cython.double[::1] = ref_arr
+    # one scratch array of 4 columns for the whole call, cut into blocks of rows: the local
+    # curves, de Casteljau's rows, the frame, 3-vectors, the frame's work, the pre-pass's work
+    mx: cython.Py_ssize_t = max(na, nb)
+    ws: cython.double[:, ::1] = np.empty((2 * na + 2 * nb + 5 + 16 + 16 + 2 * na + 2 * nb + mx + 4, 4))
+    HA: cython.double[:, ::1] = ws[0:na]
+    HB: cython.double[:, ::1] = ws[na : na + nb]
+    o: cython.Py_ssize_t = na + nb
+    wka: cython.double[:, ::1] = ws[o : o + na]
+    wkb: cython.double[:, ::1] = ws[o + na : o + na + nb]
+    o += na + nb
+    M: cython.double[:, ::1] = ws[o : o + 4]
+    ref: cython.double[:] = ws[o + 4, 0:3]
+    vec: cython.double[:, ::1] = ws[o + 5 : o + 21]
+    fw: cython.double[:, ::1] = ws[o + 21 : o + 37]
+    sep_work: cython.double[:, ::1] = ws[o + 37 :]
     for j in range(3):
         ref[j] = PA[0, j]
     # local coordinates: an exact shift for nearby values (Sterbenz), parameters unchanged
-    HA: cython.double[:, ::1] = np.empty((na, 4))
-    HB: cython.double[:, ::1] = np.empty((nb, 4))
     for i in range(na):
         for j in range(3):
             PA[i, j] -= ref[j]
@@ -852,21 +879,19 @@ def space_pair_kernel(
     big: cython.double = _abs_max(allp)
     meet: cython.double = max(1e3 * _C_EPS * big, 16.0 * _C_EPS * big0, 1e-3 * tol)
     out = np.empty((8, SPACE_COLS))
-    if _space_separated(HA, HB, tol, 5):
+    sep_depth: cython.int = 5
+    sep_slots: cython.Py_ssize_t = 4 * sep_depth + 8
+    stack = np.empty((sep_slots, na + nb, 4))
+    if _space_separated(HA, HB, tol, sep_depth, stack, np.empty(sep_slots, dtype=np.intc), sep_work):
         return out, 0, STATUS_OK
     ov: cython.double[:, ::1] = out
-    # scratch of the whole call: de Casteljau rows, 3-vectors, the frame's work, the images
-    wka: cython.double[:, ::1] = np.empty((na, 4))
-    wkb: cython.double[:, ::1] = np.empty((nb, 4))
-    vec: cython.double[:, ::1] = np.empty((16, 3))
+    # the images (numpy arrays: the planar kernel takes them)
     pa: cython.double[:] = vec[8]
     da: cython.double[:] = vec[9]
     pb: cython.double[:] = vec[10]
     db: cython.double[:] = vec[11]
     qe: cython.double[:] = vec[12]
     dqe: cython.double[:] = vec[13]
-    fw: cython.double[:, ::1] = np.empty((16, 3))
-    M: cython.double[:, ::1] = np.empty((4, 4))
     P2a_arr = np.empty((na, 2))
     W2a_arr = np.empty(na)
     P2b_arr = np.empty((nb, 2))
