@@ -4,6 +4,9 @@ The paper's §3: the frame, the relief perspective φ_k, the projection ψ, the 
 the images and the check back in space (depth check).
 
 Compiled by Cython (pure-Python mode) when the package is built; see :mod:`relief_cad._kernels`.
+The helpers are C functions on typed memoryviews; their scratch arrays are allocated once per
+kernel call. Squares that the numpy version took as ``x ** 2`` on numpy scalars go through
+:func:`_sq` (libm ``pow``, which is not always ``x * x`` in the last bit): results stay bit-identical.
 """
 
 from __future__ import annotations
@@ -12,6 +15,7 @@ import math
 
 import cython
 import numpy as np
+from cython.cimports.libc.math import pow as c_pow
 from cython.cimports.libc.math import sqrt
 
 from .constants import (
@@ -30,51 +34,83 @@ from .constants import (
 )
 from .planar import intersect_pair_kernel
 
+# C copies of the constants used in the loops
+_C_EPS = cython.declare(cython.double, _EPS)
+_C_TANGENT_SIN = cython.declare(cython.double, _SPACE_TANGENT_SIN)
+_C_SAMPLES = cython.declare(cython.Py_ssize_t, _SPACE_OVERLAP_SAMPLES)
+_C_CROSSING = cython.declare(cython.int, KIND_CROSSING)
+_C_TANGENT = cython.declare(cython.int, KIND_TANGENT)
+_C_OVERLAP = cython.declare(cython.int, KIND_OVERLAP)
+_C_UNRESOLVED = cython.declare(cython.int, KIND_UNRESOLVED)
+_INF = cython.declare(cython.double, math.inf)
+# the exponent of _sq: a variable, so that the C compiler cannot turn pow(x, 2) into x * x
+_TWO = cython.declare(cython.double, 2.0)
+# numpy's min / max of up to this many values let a later equal value win (seen on -0.0 / 0.0)
+_NP_MINMAX_SCALAR = cython.declare(cython.Py_ssize_t, 16)
 
+
+@cython.cfunc
+@cython.inline
+@cython.exceptval(check=False)
+def _sq(x: cython.double) -> cython.double:
+    """``x ** 2`` as numpy computes it on a scalar: libm ``pow(x, 2.0)``."""
+    return c_pow(x, _TWO)
+
+
+@cython.cfunc
+@cython.exceptval(check=False)
 def _space_eval(
     H: cython.const[cython.double][:, :],
     t: cython.double,
-    wk: cython.double[:, :],
+    wk: cython.double[:, ::1],
     p: cython.double[:],
     d: cython.double[:],
-):
+) -> cython.void:
     """Point ``p`` and derivative ``d`` of homogeneous curve ``H`` at ``t`` (de Casteljau)."""
-    n = H.shape[0] - 1
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    r: cython.Py_ssize_t
+    n: cython.Py_ssize_t = H.shape[0] - 1
     for i in range(n + 1):
         for j in range(4):
             wk[i, j] = H[i, j]
-    s = 1.0 - t
+    s: cython.double = 1.0 - t
     for r in range(1, n):
         for i in range(n + 1 - r):
             for j in range(4):
                 wk[i, j] = s * wk[i, j] + t * wk[i + 1, j]
-    w = s * wk[0, 3] + t * wk[1, 3]
-    dw = n * (wk[1, 3] - wk[0, 3])
+    w: cython.double = s * wk[0, 3] + t * wk[1, 3]
+    dw: cython.double = n * (wk[1, 3] - wk[0, 3])
     for j in range(3):
         p[j] = (s * wk[0, j] + t * wk[1, j]) / w
         d[j] = (n * (wk[1, j] - wk[0, j]) - p[j] * dw) / w
 
 
+@cython.cfunc
+@cython.exceptval(check=False)
 def _space_dist2(
     HA: cython.const[cython.double][:, :],
     HB: cython.const[cython.double][:, :],
     t: cython.double,
     u: cython.double,
-    wka: cython.double[:, :],
-    wkb: cython.double[:, :],
+    wka: cython.double[:, ::1],
+    wkb: cython.double[:, ::1],
     pa: cython.double[:],
     da: cython.double[:],
     pb: cython.double[:],
     db: cython.double[:],
-):
+) -> cython.double:
+    j: cython.Py_ssize_t
     _space_eval(HA, t, wka, pa, da)
     _space_eval(HB, u, wkb, pb, db)
-    f = 0.0
+    f: cython.double = 0.0
     for j in range(3):
-        f += (pa[j] - pb[j]) ** 2
+        f += (pa[j] - pb[j]) ** 2  # C doubles: as compiled before (not _sq)
     return f
 
 
+@cython.cfunc
+@cython.exceptval(check=False)
 def _space_polish(
     HA: cython.const[cython.double][:, :],
     HB: cython.const[cython.double][:, :],
@@ -82,23 +118,46 @@ def _space_polish(
     u: cython.double,
     fix_t: cython.bint,
     fix_u: cython.bint,
-    wka: cython.double[:, :],
-    wkb: cython.double[:, :],
-):
-    """Minimise |a(t) - b(u)| locally: Gauss-Newton with Levenberg damping, in [0, 1]^2."""
-    pa = np.empty(3)
-    da = np.empty(3)
-    pb = np.empty(3)
-    db = np.empty(3)
-    qa = np.empty(3)
-    qda = np.empty(3)
-    qb = np.empty(3)
-    qdb = np.empty(3)
-    f = _space_dist2(HA, HB, t, u, wka, wkb, pa, da, pb, db)
+    wka: cython.double[:, ::1],
+    wkb: cython.double[:, ::1],
+    vec: cython.double[:, ::1],
+) -> tuple[cython.double, cython.double, cython.double]:
+    """Minimise |a(t) - b(u)| locally: Gauss-Newton with Levenberg damping, in [0, 1]^2.
+
+    ``vec``: scratch, 8 rows of 3.
+    """
+    j: cython.Py_ssize_t
+    _it: cython.int
+    _attempt: cython.int
+    pa: cython.double[:] = vec[0]
+    da: cython.double[:] = vec[1]
+    pb: cython.double[:] = vec[2]
+    db: cython.double[:] = vec[3]
+    qa: cython.double[:] = vec[4]
+    qda: cython.double[:] = vec[5]
+    qb: cython.double[:] = vec[6]
+    qdb: cython.double[:] = vec[7]
+    a11: cython.double
+    a12: cython.double
+    a22: cython.double
+    g1: cython.double
+    g2: cython.double
+    r: cython.double
+    dt: cython.double
+    du: cython.double
+    m11: cython.double
+    m22: cython.double
+    det: cython.double
+    nt: cython.double
+    nu: cython.double
+    nf: cython.double
+    moved: cython.double
+    accepted: cython.bint
+    f: cython.double = _space_dist2(HA, HB, t, u, wka, wkb, pa, da, pb, db)
     if fix_t and fix_u:
         return t, u, sqrt(f)
-    lam = 0.0
-    for _ in range(80):
+    lam: cython.double = 0.0
+    for _it in range(80):
         a11 = 0.0
         a12 = 0.0
         a22 = 0.0
@@ -146,46 +205,58 @@ def _space_polish(
                 accepted = True
                 break
             lam = max(lam * 10.0, 1e-10)
-        if not accepted or f == 0.0 or moved <= 2.0 * _EPS:
+        if not accepted or f == 0.0 or moved <= 2.0 * _C_EPS:
             break
     return t, u, sqrt(f)
 
 
+@cython.cfunc
+@cython.exceptval(check=False)
 def _space_sin_angle(
     HA: cython.const[cython.double][:, :],
     HB: cython.const[cython.double][:, :],
     t: cython.double,
     u: cython.double,
-    wka: cython.double[:, :],
-    wkb: cython.double[:, :],
-):
-    pa = np.empty(3)
-    da = np.empty(3)
-    pb = np.empty(3)
-    db = np.empty(3)
-    _space_dist2(HA, HB, t, u, wka, wkb, pa, da, pb, db)
-    cx = da[1] * db[2] - da[2] * db[1]
-    cy = da[2] * db[0] - da[0] * db[2]
-    cz = da[0] * db[1] - da[1] * db[0]
-    na = sqrt(da[0] ** 2 + da[1] ** 2 + da[2] ** 2)
-    nb = sqrt(db[0] ** 2 + db[1] ** 2 + db[2] ** 2)
+    wka: cython.double[:, ::1],
+    wkb: cython.double[:, ::1],
+    vec: cython.double[:, ::1],
+) -> cython.double:
+    """Sine of the angle between the tangents at ``a(t)`` and ``b(u)``; ``vec``: scratch, 4 rows of 3."""
+    da: cython.double[:] = vec[1]
+    db: cython.double[:] = vec[3]
+    _space_dist2(HA, HB, t, u, wka, wkb, vec[0], da, vec[2], db)
+    cx: cython.double = da[1] * db[2] - da[2] * db[1]
+    cy: cython.double = da[2] * db[0] - da[0] * db[2]
+    cz: cython.double = da[0] * db[1] - da[1] * db[0]
+    na: cython.double = sqrt(_sq(da[0]) + _sq(da[1]) + _sq(da[2]))
+    nb: cython.double = sqrt(_sq(db[0]) + _sq(db[1]) + _sq(db[2]))
     if na == 0.0 or nb == 0.0:
         return 0.0
     return sqrt(cx * cx + cy * cy + cz * cz) / (na * nb)
 
 
+@cython.cfunc
+@cython.exceptval(check=False)
 def _space_closest_on(
     HB: cython.const[cython.double][:, :],
     p: cython.double[:],
     u: cython.double,
     lo: cython.double,
     hi: cython.double,
-    wkb: cython.double[:, :],
-):
-    """Gap from ``p`` to ``b`` near ``u`` (Gauss-Newton in ``u``, kept in [lo, hi])."""
-    q = np.empty(3)
-    dq = np.empty(3)
-    for _ in range(40):
+    wkb: cython.double[:, ::1],
+    q: cython.double[:],
+    dq: cython.double[:],
+) -> cython.double:
+    """Gap from ``p`` to ``b`` near ``u`` (Gauss-Newton in ``u``, kept in [lo, hi]).
+
+    ``q``, ``dq``: scratch.
+    """
+    j: cython.Py_ssize_t
+    _it: cython.int
+    g: cython.double
+    hh: cython.double
+    nu: cython.double
+    for _it in range(40):
         _space_eval(HB, u, wkb, q, dq)
         g = 0.0
         hh = 0.0
@@ -200,9 +271,11 @@ def _space_closest_on(
             break
         u = nu
     _space_eval(HB, u, wkb, q, dq)
-    return sqrt((q[0] - p[0]) ** 2 + (q[1] - p[1]) ** 2 + (q[2] - p[2]) ** 2)
+    return sqrt(_sq(q[0] - p[0]) + _sq(q[1] - p[1]) + _sq(q[2] - p[2]))
 
 
+@cython.cfunc
+@cython.exceptval(check=False)
 def _space_overlap_real(
     HA: cython.const[cython.double][:, :],
     HB: cython.const[cython.double][:, :],
@@ -211,32 +284,57 @@ def _space_overlap_real(
     t1: cython.double,
     u1: cython.double,
     tol: cython.double,
-    wka: cython.double[:, :],
-    wkb: cython.double[:, :],
-):
-    pa = np.empty(3)
-    da = np.empty(3)
-    pb = np.empty(3)
-    db = np.empty(3)
+    wka: cython.double[:, ::1],
+    wkb: cython.double[:, ::1],
+    vec: cython.double[:, ::1],
+) -> cython.bint:
+    """True when the planar overlap ``(t0, u0)-(t1, u1)`` is one in space too.
+
+    ``vec``: scratch, 6 rows of 3.
+    """
+    i: cython.Py_ssize_t
+    s: cython.double
+    pa: cython.double[:] = vec[0]
+    da: cython.double[:] = vec[1]
+    pb: cython.double[:] = vec[2]
+    db: cython.double[:] = vec[3]
     if sqrt(_space_dist2(HA, HB, t0, u0, wka, wkb, pa, da, pb, db)) > tol:
         return False
     if sqrt(_space_dist2(HA, HB, t1, u1, wka, wkb, pa, da, pb, db)) > tol:
         return False
-    lo = min(u0, u1)
-    hi = max(u0, u1)
-    for i in range(1, _SPACE_OVERLAP_SAMPLES - 1):
-        s = i / (_SPACE_OVERLAP_SAMPLES - 1.0)
+    lo: cython.double = min(u0, u1)
+    hi: cython.double = max(u0, u1)
+    for i in range(1, _C_SAMPLES - 1):
+        s = cython.cast(cython.double, i) / (_C_SAMPLES - 1.0)
         _space_eval(HA, t0 + s * (t1 - t0), wka, pa, da)
-        if _space_closest_on(HB, pa, u0 + s * (u1 - u0), lo, hi, wkb) > tol:
+        if _space_closest_on(HB, pa, u0 + s * (u1 - u0), lo, hi, wkb, vec[4], vec[5]) > tol:
             return False
     return True
 
 
-def _jacobi_eigen3(c):
-    """Eigenvectors (columns, ascending eigenvalues) of a symmetric 3x3 matrix (Jacobi rotations)."""
-    a = c.copy()
-    v = np.eye(3)
-    for _ in range(50):
+@cython.cfunc
+@cython.exceptval(check=False)
+def _jacobi_eigen3(a: cython.double[:, ::1], v: cython.double[:, ::1]) -> cython.void:
+    """Eigenvectors (columns of ``v``) of the symmetric 3x3 ``a`` (Jacobi rotations).
+
+    ``a`` is diagonalised in place.
+    """
+    i: cython.Py_ssize_t
+    p: cython.Py_ssize_t
+    q: cython.Py_ssize_t
+    k: cython.Py_ssize_t
+    _it: cython.int
+    off: cython.double
+    theta: cython.double
+    t: cython.double
+    cs: cython.double
+    sn: cython.double
+    akp: cython.double
+    akq: cython.double
+    for i in range(3):
+        for k in range(3):
+            v[i, k] = 1.0 if i == k else 0.0
+    for _it in range(50):
         off = abs(a[0, 1]) + abs(a[0, 2]) + abs(a[1, 2])
         if off <= 1e-300 or off <= 1e-15 * (abs(a[0, 0]) + abs(a[1, 1]) + abs(a[2, 2])):
             break
@@ -254,51 +352,100 @@ def _jacobi_eigen3(c):
                     a[k, p] = cs * akp - sn * akq
                     a[k, q] = sn * akp + cs * akq
                 for k in range(3):
-                    apk = a[p, k]
-                    aqk = a[q, k]
-                    a[p, k] = cs * apk - sn * aqk
-                    a[q, k] = sn * apk + cs * aqk
+                    akp = a[p, k]  # a[p, k], a[q, k]
+                    akq = a[q, k]
+                    a[p, k] = cs * akp - sn * akq
+                    a[q, k] = sn * akp + cs * akq
                 for k in range(3):
-                    vkp = v[k, p]
-                    vkq = v[k, q]
-                    v[k, p] = cs * vkp - sn * vkq
-                    v[k, q] = sn * vkp + cs * vkq
-    order = np.argsort(np.array([a[0, 0], a[1, 1], a[2, 2]]))
-    out = np.empty((3, 3))
-    for j in range(3):
-        for k in range(3):
-            out[k, j] = v[k, order[j]]
-    return out
+                    akp = v[k, p]  # v[k, p], v[k, q]
+                    akq = v[k, q]
+                    v[k, p] = cs * akp - sn * akq
+                    v[k, q] = sn * akp + cs * akq
 
 
-def _space_direction_frame(P, d, M):
-    """Frame looking along ``d`` from a centre placed so every point of ``P`` is well in front."""
-    nd = sqrt(d[0] ** 2 + d[1] ** 2 + d[2] ** 2)
-    dd = d / nd
-    lo = np.empty(3)
-    hi = np.empty(3)
+@cython.cfunc
+def _eigen_order(a: cython.double[:, ::1]) -> tuple[cython.Py_ssize_t, cython.Py_ssize_t]:
+    """Indices of the smallest and the second-smallest diagonal entry of ``a`` (np.argsort's order)."""
+    x0: cython.double = a[0, 0]
+    x1: cython.double = a[1, 1]
+    x2: cython.double = a[2, 2]
+    i0: cython.Py_ssize_t
+    i2: cython.Py_ssize_t
+    if x0 != x1 and x0 != x2 and x1 != x2 and x0 == x0 and x1 == x1 and x2 == x2:
+        # distinct numbers: one order only
+        i0 = 0 if x0 < x1 and x0 < x2 else (1 if x1 < x2 else 2)
+        i2 = 0 if x0 > x1 and x0 > x2 else (1 if x1 > x2 else 2)
+        return i0, 3 - i0 - i2
+    order = np.argsort(np.array([x0, x1, x2]))  # ties: numpy's own order
+    return int(order[0]), int(order[1])
+
+
+@cython.cfunc
+def _space_direction_frame(
+    P: cython.const[cython.double][:, :],
+    d0: cython.double,
+    d1: cython.double,
+    d2: cython.double,
+    M: cython.double[:, :],
+    fw: cython.double[:, ::1],
+) -> cython.double:
+    """Frame looking along ``d`` from a centre placed so every point of ``P`` is well in front.
+
+    ``fw``: scratch, 7 rows of 3.
+    """
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    m: cython.Py_ssize_t = P.shape[0]
+    dd: cython.double[:] = fw[0]
+    centre: cython.double[:] = fw[1]
+    origin: cython.double[:] = fw[2]
+    helper: cython.double[:] = fw[3]
+    e1: cython.double[:] = fw[4]
+    e2: cython.double[:] = fw[5]
+    lo: cython.double
+    hi: cython.double
+    r2: cython.double
+    dep: cython.double
+    nd: cython.double = sqrt(_sq(d0) + _sq(d1) + _sq(d2))
+    dd[0] = d0 / nd
+    dd[1] = d1 / nd
+    dd[2] = d2 / nd
     for j in range(3):
-        lo[j] = P[:, j].min()
-        hi[j] = P[:, j].max()
-    centre = 0.5 * (lo + hi)
-    radius = 0.0
-    spread = 0.0
-    for i in range(P.shape[0]):
+        # numpy's P[:, j].min() / .max(), including which of -0.0 / 0.0 it returns
+        if m <= _NP_MINMAX_SCALAR:
+            lo = P[0, j]
+            hi = P[0, j]
+            for i in range(1, m):
+                if P[i, j] <= lo:
+                    lo = P[i, j]
+                if P[i, j] >= hi:
+                    hi = P[i, j]
+        else:
+            lo = np.asarray(P)[:, j].min()
+            hi = np.asarray(P)[:, j].max()
+        centre[j] = 0.5 * (lo + hi)
+    radius: cython.double = 0.0
+    spread: cython.double = 0.0
+    for i in range(m):
         r2 = 0.0
         dep = 0.0
         for j in range(3):
-            r2 += (P[i, j] - centre[j]) ** 2
+            r2 += _sq(P[i, j] - centre[j])
             dep += (P[i, j] - centre[j]) * dd[j]
         radius = max(radius, sqrt(r2))
         spread = max(spread, abs(dep))
     if radius == 0.0:
         radius = 1.0
-    dist = spread + 2.0 * radius
-    origin = centre - dist * dd
-    helper = np.array([1.0, 0.0, 0.0]) if abs(dd[0]) < 0.8 else np.array([0.0, 1.0, 0.0])
-    e1 = np.cross(helper, dd)
-    e1 = e1 / sqrt(e1[0] ** 2 + e1[1] ** 2 + e1[2] ** 2)
-    e2 = np.cross(dd, e1)
+    dist: cython.double = spread + 2.0 * radius
+    for j in range(3):
+        origin[j] = centre[j] - dist * dd[j]
+        helper[j] = 0.0
+    helper[0 if abs(dd[0]) < 0.8 else 1] = 1.0
+    _cross(helper, dd, e1)
+    ne1: cython.double = sqrt(_sq(e1[0]) + _sq(e1[1]) + _sq(e1[2]))
+    for j in range(3):
+        e1[j] = e1[j] / ne1
+    _cross(dd, e1, e2)
     for j in range(3):
         M[0, j] = e1[j] / radius
         M[1, j] = e2[j] / radius
@@ -310,18 +457,33 @@ def _space_direction_frame(P, d, M):
     return radius
 
 
-def _space_frame(mode, P, ref, M):
-    """Fill ``M`` (local -> frame coordinates) for frame ``mode``; return its scale, or 0 if unusable.
+@cython.cfunc
+@cython.exceptval(check=False)
+def _cross(a: cython.double[:], b: cython.double[:], out: cython.double[:]) -> cython.void:
+    """``out = a x b`` with np.cross's operations."""
+    out[0] = a[1] * b[2] - a[2] * b[1]
+    out[1] = a[2] * b[0] - a[0] * b[2]
+    out[2] = a[0] * b[1] - a[1] * b[0]
 
-    Mode 0 is the model's own frame (centre at the model origin), usable when every control
-    point lies in front of it (z > 0) with moderate depth ratio: the paper's frame for its
-    curves. Modes 1-3 look along the least-variance axis, a tilted axis, a fixed oblique axis.
-    """
-    m = P.shape[0]
+
+@cython.cfunc
+def _space_frame_work(
+    mode: cython.int,
+    P: cython.const[cython.double][:, :],
+    ref: cython.const[cython.double][:],
+    M: cython.double[:, :],
+    fw: cython.double[:, ::1],
+) -> cython.double:
+    """:func:`_space_frame` with scratch ``fw`` (16 rows of 3)."""
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    k: cython.Py_ssize_t
+    m: cython.Py_ssize_t = P.shape[0]
+    z: cython.double
     if mode == 0:
-        zmin = np.inf
-        zmax = -np.inf
-        big = 0.0
+        zmin: cython.double = _INF
+        zmax: cython.double = -_INF
+        big: cython.double = 0.0
         for i in range(m):
             z = P[i, 2] + ref[2]
             zmin = min(zmin, z)
@@ -336,34 +498,77 @@ def _space_frame(mode, P, ref, M):
         for j in range(3):
             M[j, 3] = ref[j]
         return 1.0
-    mean = np.zeros(3)
+    cov: cython.double[:, ::1] = fw[0:3]
+    vecs: cython.double[:, ::1] = fw[3:6]
+    mean: cython.double[:] = fw[6]
+    for j in range(3):
+        mean[j] = 0.0
     for i in range(m):
-        mean += P[i]
-    mean /= m
-    cov = np.zeros((3, 3))
+        for j in range(3):
+            mean[j] += P[i, j]
+    for j in range(3):
+        mean[j] /= cython.cast(cython.double, m)
+    for j in range(3):
+        for k in range(3):
+            cov[j, k] = 0.0
     for i in range(m):
         for j in range(3):
             for k in range(3):
                 cov[j, k] += (P[i, j] - mean[j]) * (P[i, k] - mean[k])
-    vecs = _jacobi_eigen3(cov)
+    _jacobi_eigen3(cov, vecs)
+    o0: cython.Py_ssize_t
+    o1: cython.Py_ssize_t
+    o0, o1 = _eigen_order(cov)
     if mode == 1:
-        d = vecs[:, 0].copy()
-    elif mode == 2:
-        d = vecs[:, 0] + 0.6 * vecs[:, 1]
-    else:
-        d = np.array([0.3, -0.5, 0.81])
-    return _space_direction_frame(P, d, M)
+        return _space_direction_frame(P, vecs[0, o0], vecs[1, o0], vecs[2, o0], M, fw[7:])
+    if mode == 2:
+        return _space_direction_frame(
+            P,
+            vecs[0, o0] + 0.6 * vecs[0, o1],
+            vecs[1, o0] + 0.6 * vecs[1, o1],
+            vecs[2, o0] + 0.6 * vecs[2, o1],
+            M,
+            fw[7:],
+        )
+    return _space_direction_frame(P, 0.3, -0.5, 0.81, M, fw[7:])
 
 
+@cython.ccall
+def _space_frame(
+    mode: cython.int,
+    P: cython.const[cython.double][:, :],
+    ref: cython.const[cython.double][:],
+    M: cython.double[:, :],
+) -> cython.double:
+    """Fill ``M`` (local -> frame coordinates) for frame ``mode``; return its scale, or 0 if unusable.
+
+    Mode 0 is the model's own frame (centre at the model origin), usable when every control
+    point lies in front of it (z > 0) with moderate depth ratio: the paper's frame for its
+    curves. Modes 1-3 look along the least-variance axis, a tilted axis, a fixed oblique axis.
+    """
+    return _space_frame_work(mode, P, ref, M, np.empty((16, 3)))
+
+
+@cython.ccall
+@cython.exceptval(check=False)
 def _space_project(
     H: cython.const[cython.double][:, :],
     M: cython.double[:, :],
     k: cython.double,
     P2: cython.double[:, :],
     W2: cython.double[:],
-):
+) -> cython.bint:
     """psi(phi(M H)): the planar image of a curve, as Cartesian points and weights. False if behind O."""
-    n = H.shape[0]
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    n: cython.Py_ssize_t = H.shape[0]
+    x: cython.double
+    y: cython.double
+    z: cython.double
+    w: cython.double
+    rx: cython.double
+    ry: cython.double
+    rz: cython.double
     for i in range(n):
         x = 0.0
         y = 0.0
@@ -386,42 +591,95 @@ def _space_project(
     return True
 
 
-def _space_lipschitz(P2a, W2a, P2b, W2b, HA, HB, M):
+@cython.cfunc
+@cython.exceptval(check=False)
+def _lipschitz_scan(
+    H: cython.const[cython.double][:, :],
+    P2: cython.double[:, :],
+    M: cython.double[:, :],
+    zmin: cython.double,
+    r2: cython.double,
+) -> tuple[cython.double, cython.double]:
+    """Update the least depth ``zmin`` and the largest squared image radius ``r2`` with one curve."""
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    w: cython.double
+    z: cython.double
+    for i in range(H.shape[0]):
+        w = H[i, 3]
+        z = 0.0
+        for j in range(4):
+            z += M[2, j] * H[i, j]
+        zmin = min(zmin, z / w)
+        r2 = max(r2, _sq(P2[i, 0]) + _sq(P2[i, 1]))
+    return zmin, r2
+
+
+@cython.cfunc
+@cython.exceptval(check=False)
+def _space_lipschitz(
+    P2a: cython.double[:, :],
+    P2b: cython.double[:, :],
+    HA: cython.const[cython.double][:, :],
+    HB: cython.const[cython.double][:, :],
+    M: cython.double[:, :],
+) -> cython.double:
     """Bound of |D psi| over the hull of both curves' control points in frame coordinates."""
-    zmin = np.inf
-    r2 = 0.0
-    for H, P2 in ((HA, P2a), (HB, P2b)):
-        for i in range(H.shape[0]):
-            w = H[i, 3]
-            z = 0.0
-            for j in range(4):
-                z += M[2, j] * H[i, j]
-            zmin = min(zmin, z / w)
-            r2 = max(r2, P2[i, 0] ** 2 + P2[i, 1] ** 2)
+    zmin: cython.double = _INF
+    r2: cython.double = 0.0
+    zmin, r2 = _lipschitz_scan(HA, P2a, M, zmin, r2)
+    zmin, r2 = _lipschitz_scan(HB, P2b, M, zmin, r2)
     return sqrt(1.0 + r2) / zmin
 
 
-def _space_add(out, n, kind, t, u, t1, u1, x, y, z, dist):
+@cython.cfunc
+def _space_add(
+    out: object,
+    n: cython.Py_ssize_t,
+    kind: cython.double,
+    t: cython.double,
+    u: cython.double,
+    t1: cython.double,
+    u1: cython.double,
+    x: cython.double,
+    y: cython.double,
+    z: cython.double,
+    dist: cython.double,
+) -> object:
+    """Write row ``n`` of ``out`` (grown when full); return ``out``."""
     if n >= out.shape[0]:
         bigger = np.empty((2 * out.shape[0] + 4, SPACE_COLS))
         bigger[:n] = out[:n]
         out = bigger
-    out[n, 0] = kind
-    out[n, 1] = t
-    out[n, 2] = u
-    out[n, 3] = t1
-    out[n, 4] = u1
-    out[n, 5] = x
-    out[n, 6] = y
-    out[n, 7] = z
-    out[n, 8] = dist
-    return out, n + 1
+    ov: cython.double[:, ::1] = out
+    ov[n, 0] = kind
+    ov[n, 1] = t
+    ov[n, 2] = u
+    ov[n, 3] = t1
+    ov[n, 4] = u1
+    ov[n, 5] = x
+    ov[n, 6] = y
+    ov[n, 7] = z
+    ov[n, 8] = dist
+    return out
 
 
-def _space_half(H: cython.const[cython.double][:, :], L: cython.double[:, :], R: cython.double[:, :]):
-    """Split homogeneous rows ``H`` at t = 1/2 into ``L`` and ``R`` (de Casteljau)."""
-    n = H.shape[0] - 1
-    wk = H.copy()
+@cython.cfunc
+@cython.exceptval(check=False)
+def _space_half(
+    H: cython.const[cython.double][:, :],
+    L: cython.double[:, ::1],
+    R: cython.double[:, ::1],
+    wk: cython.double[:, ::1],
+) -> cython.void:
+    """Split homogeneous rows ``H`` at t = 1/2 into ``L`` and ``R`` (de Casteljau; ``wk``: scratch)."""
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    r: cython.Py_ssize_t
+    n: cython.Py_ssize_t = H.shape[0] - 1
+    for i in range(n + 1):
+        for j in range(4):
+            wk[i, j] = H[i, j]
     for j in range(4):
         L[0, j] = wk[0, j]
         R[n, j] = wk[n, j]
@@ -434,95 +692,180 @@ def _space_half(H: cython.const[cython.double][:, :], L: cython.double[:, :], R:
             R[n - r, j] = wk[n - r, j]
 
 
-def _space_box(H: cython.const[cython.double][:, :], box: cython.double[:]):
-    """Box ``[lo x, lo y, lo z, hi x, hi y, hi z]`` of the control points (contains the curve)."""
+@cython.cfunc
+@cython.exceptval(check=False)
+def _space_box(
+    H: cython.const[cython.double][:, :], lo: cython.double[:], hi: cython.double[:]
+) -> cython.void:
+    """Box ``lo``-``hi`` (x, y, z) of the control points (contains the curve)."""
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    x: cython.double
     for j in range(3):
-        box[j] = math.inf
-        box[3 + j] = -math.inf
+        lo[j] = _INF
+        hi[j] = -_INF
     for i in range(H.shape[0]):
         for j in range(3):
             x = H[i, j] / H[i, 3]
-            box[j] = min(box[j], x)
-            box[3 + j] = max(box[3 + j], x)
+            lo[j] = min(lo[j], x)
+            hi[j] = max(hi[j], x)
 
 
-def _space_separated(HA, HB, tol, max_depth):
+@cython.cfunc
+@cython.exceptval(check=False)
+def _copy_rows(src: cython.const[cython.double][:, :], dst: cython.double[:, ::1]) -> cython.void:
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    for i in range(src.shape[0]):
+        for j in range(4):
+            dst[i, j] = src[i, j]
+
+
+@cython.cfunc
+@cython.exceptval(check=False)
+def _push(
+    stack: cython.double[:, :, ::1],
+    top: cython.Py_ssize_t,
+    na: cython.Py_ssize_t,
+    HA: cython.double[:, ::1],
+    HB: cython.double[:, ::1],
+) -> cython.void:
+    """Store the pair (``HA``, ``HB``) in slot ``top`` of ``stack`` (a's rows first)."""
+    _copy_rows(HA, stack[top, :na])
+    _copy_rows(HB, stack[top, na:])
+
+
+@cython.cfunc
+@cython.exceptval(check=False)
+def _space_separated(
+    HA: cython.double[:, ::1],
+    HB: cython.double[:, ::1],
+    tol: cython.double,
+    max_depth: cython.int,
+    stack: cython.double[:, :, ::1],
+    depth: cython.int[::1],
+    work: cython.double[:, ::1],
+) -> cython.bint:
     """True when boxes of sub-curves (halving both, depth <= max_depth) prove a gap wider than tol.
 
     A cheap pre-pass before the relief scheme: two space curves that stay apart need no
     projection at all (their projections may well cross). False means "not proven apart".
+    Scratch: ``stack`` (4 max_depth + 8, na + nb, 4), a pair of sub-curves per slot;
+    ``depth`` (4 max_depth + 8); ``work`` (2 na + 2 nb + max(na, nb) + 4 rows of 4).
     """
-    na = HA.shape[0]
-    nb = HB.shape[0]
-    size = 4 * max_depth + 8
-    stack_a = np.empty((size, na, 4))
-    stack_b = np.empty((size, nb, 4))
-    depth = np.empty(size, dtype=np.int64)
-    stack_a[0] = HA
-    stack_b[0] = HB
+    na: cython.Py_ssize_t = HA.shape[0]
+    nb: cython.Py_ssize_t = HB.shape[0]
+    size: cython.Py_ssize_t = 4 * max_depth + 8
+    # the halves, de Casteljau's rows, the two boxes
+    la: cython.double[:, ::1] = work[0:na]
+    ra: cython.double[:, ::1] = work[na : 2 * na]
+    lb: cython.double[:, ::1] = work[2 * na : 2 * na + nb]
+    rb: cython.double[:, ::1] = work[2 * na + nb : 2 * na + 2 * nb]
+    o: cython.Py_ssize_t = 2 * na + 2 * nb
+    wk: cython.double[:, ::1] = work[o : o + max(na, nb)]
+    o += max(na, nb)
+    lo_a: cython.double[:] = work[o]
+    hi_a: cython.double[:] = work[o + 1]
+    lo_b: cython.double[:] = work[o + 2]
+    hi_b: cython.double[:] = work[o + 3]
+    _push(stack, 0, na, HA, HB)
     depth[0] = 0
-    top = 1
-    ca = np.empty((na, 4))
-    cb = np.empty((nb, 4))
-    la = np.empty((na, 4))
-    ra = np.empty((na, 4))
-    lb = np.empty((nb, 4))
-    rb = np.empty((nb, 4))
-    ba = np.empty(6)
-    bb = np.empty(6)
+    top: cython.Py_ssize_t = 1
+    j: cython.Py_ssize_t
+    q: cython.Py_ssize_t
+    d: cython.int
+    apart: cython.bint
     while top > 0:
         top -= 1
-        ca[:, :] = stack_a[top]
-        cb[:, :] = stack_b[top]
         d = depth[top]
-        _space_box(ca, ba)
-        _space_box(cb, bb)
+        _space_box(stack[top, :na], lo_a, hi_a)
+        _space_box(stack[top, na:], lo_b, hi_b)
         apart = False
         for j in range(3):
-            if ba[j] > bb[3 + j] + tol or bb[j] > ba[3 + j] + tol:
+            if lo_a[j] > hi_b[j] + tol or lo_b[j] > hi_a[j] + tol:
                 apart = True
         if apart:
             continue
         if d >= max_depth or top + 4 > size:
             return False
-        _space_half(ca, la, ra)
-        _space_half(cb, lb, rb)
-        stack_a[top] = la
-        stack_b[top] = lb
-        stack_a[top + 1] = la
-        stack_b[top + 1] = rb
-        stack_a[top + 2] = ra
-        stack_b[top + 2] = lb
-        stack_a[top + 3] = ra
-        stack_b[top + 3] = rb
+        _space_half(stack[top, :na], la, ra, wk)
+        _space_half(stack[top, na:], lb, rb, wk)
+        _push(stack, top, na, la, lb)
+        _push(stack, top + 1, na, la, rb)
+        _push(stack, top + 2, na, ra, lb)
+        _push(stack, top + 3, na, ra, rb)
         for q in range(4):
             depth[top + q] = d + 1
         top += 4
     return True
 
 
-def space_pair_kernel(HA0, HB0, tol, budget, k):
+@cython.cfunc
+@cython.exceptval(check=False)
+def _abs_max(P: cython.double[:, ::1]) -> cython.double:
+    """``np.abs(P).max()`` (finite data)."""
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    big: cython.double = abs(P[0, 0])
+    for i in range(P.shape[0]):
+        for j in range(P.shape[1]):
+            big = max(big, abs(P[i, j]))
+    return big
+
+
+def space_pair_kernel(
+    HA0: cython.const[cython.double][:, :],
+    HB0: cython.const[cython.double][:, :],
+    tol: cython.double,
+    budget,
+    k: cython.double,
+):
     """Intersect two space rational curves by the relief scheme.
 
     ``HA0``, ``HB0``: homogeneous rows ``(w x, w y, w z, w)`` in model coordinates; ``tol`` a
     distance in model units (> 0: resolved by the caller, relief_cad.tolerances); ``budget``
     the planar clipping budget; ``k`` the span of the relief perspective. Returns ``(rows, nrows, status)``.
     """
-    na = HA0.shape[0]
-    nb = HB0.shape[0]
-    PA = np.empty((na, 3))
-    PB = np.empty((nb, 3))
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    q: cython.Py_ssize_t
+    r: cython.Py_ssize_t
+    e: cython.Py_ssize_t
+    mode: cython.int
+    kind: cython.int
+    ckind: cython.int
+    na: cython.Py_ssize_t = HA0.shape[0]
+    nb: cython.Py_ssize_t = HB0.shape[0]
+    # allp holds the local Cartesian points of a (rows :na) and of b (rows na:)
+    allp_arr = np.empty((na + nb, 3))
+    allp: cython.double[:, ::1] = allp_arr
+    PA: cython.double[:, ::1] = allp[:na]
+    PB: cython.double[:, ::1] = allp[na:]
     for i in range(na):
         for j in range(3):
             PA[i, j] = HA0[i, j] / HA0[i, 3]
     for i in range(nb):
         for j in range(3):
             PB[i, j] = HB0[i, j] / HB0[i, 3]
-    big0 = max(np.abs(PA).max(), np.abs(PB).max())
-    ref = PA[0].copy()
+    big0: cython.double = max(_abs_max(PA), _abs_max(PB))
+    # one scratch array of 4 columns for the whole call, cut into blocks of rows: the local
+    # curves, de Casteljau's rows, the frame, 3-vectors, the frame's work, the pre-pass's work
+    mx: cython.Py_ssize_t = max(na, nb)
+    ws: cython.double[:, ::1] = np.empty((2 * na + 2 * nb + 5 + 16 + 16 + 2 * na + 2 * nb + mx + 4, 4))
+    HA: cython.double[:, ::1] = ws[0:na]
+    HB: cython.double[:, ::1] = ws[na : na + nb]
+    o: cython.Py_ssize_t = na + nb
+    wka: cython.double[:, ::1] = ws[o : o + na]
+    wkb: cython.double[:, ::1] = ws[o + na : o + na + nb]
+    o += na + nb
+    M: cython.double[:, ::1] = ws[o : o + 4]
+    ref: cython.double[:] = ws[o + 4, 0:3]
+    vec: cython.double[:, ::1] = ws[o + 5 : o + 21]
+    fw: cython.double[:, ::1] = ws[o + 21 : o + 37]
+    sep_work: cython.double[:, ::1] = ws[o + 37 :]
+    for j in range(3):
+        ref[j] = PA[0, j]
     # local coordinates: an exact shift for nearby values (Sterbenz), parameters unchanged
-    HA = np.empty((na, 4))
-    HB = np.empty((nb, 4))
     for i in range(na):
         for j in range(3):
             PA[i, j] -= ref[j]
@@ -533,74 +876,90 @@ def space_pair_kernel(HA0, HB0, tol, budget, k):
             PB[i, j] -= ref[j]
             HB[i, j] = PB[i, j] * HB0[i, 3]
         HB[i, 3] = HB0[i, 3]
-    allp = np.empty((na + nb, 3))
-    allp[:na] = PA
-    allp[na:] = PB
-    big = np.abs(allp).max()
-    meet = max(1e3 * _EPS * big, 16.0 * _EPS * big0, 1e-3 * tol)
+    big: cython.double = _abs_max(allp)
+    meet: cython.double = max(1e3 * _C_EPS * big, 16.0 * _C_EPS * big0, 1e-3 * tol)
     out = np.empty((8, SPACE_COLS))
-    if _space_separated(HA, HB, tol, 5):
+    sep_depth: cython.int = 5
+    sep_slots: cython.Py_ssize_t = 4 * sep_depth + 8
+    stack = np.empty((sep_slots, na + nb, 4))
+    if _space_separated(HA, HB, tol, sep_depth, stack, np.empty(sep_slots, dtype=np.intc), sep_work):
         return out, 0, STATUS_OK
-    wka = np.empty((na, 4))
-    wkb = np.empty((nb, 4))
-    M = np.empty((4, 4))
-    P2a = np.empty((na, 2))
-    W2a = np.empty(na)
-    P2b = np.empty((nb, 2))
-    W2b = np.empty(nb)
-    nout = 0
+    ov: cython.double[:, ::1] = out
+    # the images (numpy arrays: the planar kernel takes them)
+    pa: cython.double[:] = vec[8]
+    da: cython.double[:] = vec[9]
+    pb: cython.double[:] = vec[10]
+    db: cython.double[:] = vec[11]
+    qe: cython.double[:] = vec[12]
+    dqe: cython.double[:] = vec[13]
+    P2a_arr = np.empty((na, 2))
+    W2a_arr = np.empty(na)
+    P2b_arr = np.empty((nb, 2))
+    W2b_arr = np.empty(nb)
+    P2a: cython.double[:, ::1] = P2a_arr
+    W2a: cython.double[::1] = W2a_arr
+    P2b: cython.double[:, ::1] = P2b_arr
+    W2b: cython.double[::1] = W2b_arr
+    rv: cython.double[:, :]
+    nres: cython.Py_ssize_t
+    nout: cython.Py_ssize_t = 0
+    scale: cython.double
+    ptol: cython.double
+    artefact: cython.bint
+    fix_t: cython.bint
+    fix_u: cython.bint
+    inside: cython.bint
+    t: cython.double
+    u: cython.double
+    gap: cython.double
+    end: cython.double
+    te: cython.double
+    gap_e: cython.double
+    lo_u: cython.double
+    hi_u: cython.double
+    near: cython.double
+    dup: cython.Py_ssize_t
     for mode in range(_SPACE_N_FRAMES):
-        scale = _space_frame(mode, allp, ref, M)
+        scale = _space_frame_work(mode, allp, ref, M, fw)
         if scale == 0.0:
             continue
         if not _space_project(HA, M, k, P2a, W2a) or not _space_project(HB, M, k, P2b, W2b):
             continue
-        ptol = _space_lipschitz(P2a, W2a, P2b, W2b, HA, HB, M) * (tol / scale) * (1.0 + 1e-6)
+        ptol = _space_lipschitz(P2a, P2b, HA, HB, M) * (tol / scale) * (1.0 + 1e-6)
         res = np.empty((16, RES_COLS))
-        res, nres = intersect_pair_kernel(P2a, W2a, P2b, W2b, ptol, budget, 0, res, 0)
+        res, nres = intersect_pair_kernel(P2a_arr, W2a_arr, P2b_arr, W2b_arr, ptol, budget, 0, res, 0)
+        rv = res
         artefact = False
         nout = 0
         for r in range(nres):
-            kind = int(res[r, 1])
-            if kind == KIND_OVERLAP:
-                if _space_overlap_real(HA, HB, res[r, 2], res[r, 3], res[r, 4], res[r, 5], tol, wka, wkb):
-                    out, nout = _space_add(
-                        out,
-                        nout,
-                        KIND_OVERLAP,
-                        res[r, 2],
-                        res[r, 3],
-                        res[r, 4],
-                        res[r, 5],
-                        0.0,
-                        0.0,
-                        0.0,
-                        0.0,
+            kind = cython.cast(cython.int, rv[r, 1])
+            if kind == _C_OVERLAP:
+                if _space_overlap_real(HA, HB, rv[r, 2], rv[r, 3], rv[r, 4], rv[r, 5], tol, wka, wkb, vec):
+                    out = _space_add(
+                        out, nout, _C_OVERLAP, rv[r, 2], rv[r, 3], rv[r, 4], rv[r, 5], 0.0, 0.0, 0.0, 0.0
                     )
+                    nout += 1
                 else:
                     artefact = True
                     break
-            elif kind == KIND_UNRESOLVED:
-                out, nout = _space_add(
-                    out, nout, KIND_UNRESOLVED, res[r, 2], res[r, 3], res[r, 4], res[r, 5], 0.0, 0.0, 0.0, 0.0
+            elif kind == _C_UNRESOLVED:
+                out = _space_add(
+                    out, nout, _C_UNRESOLVED, rv[r, 2], rv[r, 3], rv[r, 4], rv[r, 5], 0.0, 0.0, 0.0, 0.0
                 )
+                nout += 1
         if artefact:
             continue
-        pa = np.empty(3)
-        da = np.empty(3)
-        pb = np.empty(3)
-        db = np.empty(3)
-        qe = np.empty(3)
-        dqe = np.empty(3)
+        ov = out
         for r in range(nres):
-            kind = int(res[r, 1])
-            if kind != KIND_CROSSING and kind != KIND_TANGENT:
+            kind = cython.cast(cython.int, rv[r, 1])
+            if kind != _C_CROSSING and kind != _C_TANGENT:
                 continue
-            t = res[r, 2]
-            u = res[r, 3]
+            t = rv[r, 2]
+            u = rv[r, 3]
             fix_t = False
             fix_u = False
-            for end in (0.0, 1.0):
+            for e in range(2):
+                end = cython.cast(cython.double, e)  # 0.0, then 1.0
                 if t == end or abs(t - end) < 1e-9:
                     if sqrt(_space_dist2(HA, HB, end, u, wka, wkb, pa, da, pb, db)) <= tol:
                         t = end
@@ -609,7 +968,7 @@ def space_pair_kernel(HA0, HB0, tol, budget, k):
                     if sqrt(_space_dist2(HA, HB, t, end, wka, wkb, pa, da, pb, db)) <= tol:
                         u = end
                         fix_u = True
-            t, u, gap = _space_polish(HA, HB, t, u, fix_t, fix_u, wka, wkb)
+            t, u, gap = _space_polish(HA, HB, t, u, fix_t, fix_u, wka, wkb, vec)
             if gap > tol:
                 continue
             # a point inside an overlap, or at the place where one ends (a closed curve returns to
@@ -617,42 +976,43 @@ def space_pair_kernel(HA0, HB0, tol, budget, k):
             inside = False
             _space_dist2(HA, HB, t, u, wka, wkb, pa, da, pb, db)
             for q in range(nout):
-                if out[q, 0] == KIND_OVERLAP:
-                    lo_u = min(out[q, 2], out[q, 4])
-                    hi_u = max(out[q, 2], out[q, 4])
-                    if out[q, 1] - 1e-9 <= t <= out[q, 3] + 1e-9 and lo_u - 1e-9 <= u <= hi_u + 1e-9:
+                if ov[q, 0] == _C_OVERLAP:
+                    lo_u = min(ov[q, 2], ov[q, 4])
+                    hi_u = max(ov[q, 2], ov[q, 4])
+                    if ov[q, 1] - 1e-9 <= t <= ov[q, 3] + 1e-9 and lo_u - 1e-9 <= u <= hi_u + 1e-9:
                         inside = True
-                    for te in (out[q, 1], out[q, 3]):
+                    for e in range(2):
+                        te = ov[q, 1 + 2 * e]  # t0, then t1
                         _space_eval(HA, te, wka, qe, dqe)
                         gap_e = 0.0
                         for j in range(3):
-                            gap_e += (qe[j] - pa[j]) ** 2
+                            gap_e += _sq(qe[j] - pa[j])
                         if sqrt(gap_e) <= tol:
                             inside = True
             if inside:
                 continue
-            ckind = KIND_TANGENT
-            if gap <= meet and _space_sin_angle(HA, HB, t, u, wka, wkb) > _SPACE_TANGENT_SIN:
-                ckind = KIND_CROSSING
+            ckind = _C_TANGENT
+            if gap <= meet and _space_sin_angle(HA, HB, t, u, wka, wkb, vec) > _C_TANGENT_SIN:
+                ckind = _C_CROSSING
             # merge repeated finds of one contact (tangent finds agree only to ~sqrt(eps))
             dup = -1
             for q in range(nout):
-                if out[q, 0] == KIND_CROSSING or out[q, 0] == KIND_TANGENT:
+                if ov[q, 0] == _C_CROSSING or ov[q, 0] == _C_TANGENT:
                     near = 1e-10
-                    if ckind == KIND_TANGENT and out[q, 0] == KIND_TANGENT:
+                    if ckind == _C_TANGENT and ov[q, 0] == _C_TANGENT:
                         near = 1e-6
-                    if abs(out[q, 1] - t) <= near and abs(out[q, 2] - u) <= near:
+                    if abs(ov[q, 1] - t) <= near and abs(ov[q, 2] - u) <= near:
                         dup = q
             _space_dist2(HA, HB, t, u, wka, wkb, pa, da, pb, db)
             if dup >= 0:
-                if gap < out[dup, 8]:
-                    out[dup, 1] = t
-                    out[dup, 2] = u
+                if gap < ov[dup, 8]:
+                    ov[dup, 1] = t
+                    ov[dup, 2] = u
                     for j in range(3):
-                        out[dup, 5 + j] = 0.5 * (pa[j] + pb[j]) + ref[j]
-                    out[dup, 8] = gap
+                        ov[dup, 5 + j] = 0.5 * (pa[j] + pb[j]) + ref[j]
+                    ov[dup, 8] = gap
                 continue
-            out, nout = _space_add(
+            out = _space_add(
                 out,
                 nout,
                 ckind,
@@ -665,5 +1025,7 @@ def space_pair_kernel(HA0, HB0, tol, budget, k):
                 0.5 * (pa[2] + pb[2]) + ref[2],
                 gap,
             )
+            nout += 1
+            ov = out
         return out, nout, STATUS_OK
     return out, 0, STATUS_ARTEFACT
