@@ -95,8 +95,11 @@ def _foot(b: RationalBezier, pts: FloatArray, enough: float = 0.0) -> tuple[Floa
         r = b.evaluate(u) - pts
         d1 = hod.evaluate(u)
         step = (r * d1).sum(axis=1) / np.maximum((d1 * d1).sum(axis=1), 1e-300)
-        # the Newton step, and two shrinking probes that leave stationary points (a fold tip)
-        for trial in (np.clip(u - step, 0.0, 1.0), np.clip(u + delta, 0.0, 1.0),
+        # the Newton step, damped (halved, quartered: next to a double point the full step lands on
+        # the other branch and is refused), and two shrinking probes that leave stationary points
+        # (a fold tip)
+        for trial in (np.clip(u - step, 0.0, 1.0), np.clip(u - 0.5 * step, 0.0, 1.0),
+                      np.clip(u - 0.25 * step, 0.0, 1.0), np.clip(u + delta, 0.0, 1.0),
                       np.clip(u - delta, 0.0, 1.0)):
             tdist = np.sqrt(((b.evaluate(trial) - pts) ** 2).sum(axis=1))
             better = tdist < dist

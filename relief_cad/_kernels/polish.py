@@ -340,9 +340,7 @@ def _coincide(
     fwd[0] = ua
     fwd[nsamp] = ub
     for k in range(1, nsamp):
-        # NOTE: compiled, k / nsamp below is C integer division (0 for 0 < k < nsamp), unlike plain
-        # Python; kept as it was (results bit-identical), to be fixed separately
-        s = ta + (tb - ta) * (k / nsamp)
+        s = ta + (tb - ta) * (cython.cast(cython.double, k) / nsamp)  # true division (k, nsamp: C ints)
         px, py, _a, _b, _c, _d = _eval(HA, s, wa)
         uu = _local_proj(HB, px, py, u, wb)
         x, y, _a, _b, _c, _d = _eval(HB, uu, wb)
@@ -356,11 +354,11 @@ def _coincide(
         return False
     # and back: b's stretch lies on a (seeded from the forward correspondence)
     for k in range(1, nsamp):
-        s = ua + (ub - ua) * (k / nsamp)
+        s = ua + (ub - ua) * (cython.cast(cython.double, k) / nsamp)
         j = 0
         while j < nsamp - 1 and (fwd[j + 1] - s) * direction < 0.0:
             j += 1
-        seed = ta + (tb - ta) * (j / nsamp)
+        seed = ta + (tb - ta) * (cython.cast(cython.double, j) / nsamp)
         px, py, _a, _b, _c, _d = _eval(HB, s, wb)
         tt = _local_proj(HA, px, py, seed, wa)
         x, y, _a, _b, _c, _d = _eval(HA, tt, wa)
