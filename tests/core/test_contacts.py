@@ -137,3 +137,17 @@ def test_closed_curve_against_itself_is_one_overlap_in_its_own_sense(dim: int, w
     assert list(intersect(c, c.elevate(1))) == [Overlap(t=(0.0, 1.0), u=(0.0, 1.0))]
     assert list(intersect(c, c.reversed())) == [Overlap(t=(0.0, 1.0), u=(1.0, 0.0))]
     assert list(intersect(c.reversed(), c)) == [Overlap(t=(0.0, 1.0), u=(1.0, 0.0))]
+
+
+def test_curves_sharing_only_their_end_points_are_two_crossings_not_an_overlap() -> None:
+    # compiled, the kernel's coincidence test of two end contacts sampled only its first point
+    # (k / nsamp of two C integers): a chord and its arc, or two quarter circles between the same
+    # points, came back as one Overlap
+    chord, arc = RationalBezier([[0, 0], [1, 0]]), RationalBezier([[0, 0], [0.5, 1], [1, 0]])
+    r = 2**-0.5
+    q1 = RationalBezier([[1, 0], [1, 1], [0, 1]], weights=[1, r, 1])
+    q2 = RationalBezier([[1, 0], [0, 0], [0, 1]], weights=[1, r, 1])
+    for a, b in ((chord, arc), (arc, chord), (q1, q2), (q1, q2.reversed())):
+        res = intersect(a, b)
+        assert not res.overlaps and len(res) == 2, res
+        assert {(r.t, r.u) for r in res} <= {(0.0, 0.0), (0.0, 1.0), (1.0, 0.0), (1.0, 1.0)}, res
