@@ -152,6 +152,17 @@ def _planar(pa: FloatArray, wa: FloatArray, pb: FloatArray, wb: FloatArray, tol:
     return _rows_to_list(intersect_one_kernel(_ro(pa), _ro(wa), _ro(pb), _ro(wb), tol, budget))
 
 
+def _may_coincide(pa: FloatArray, pb: FloatArray, tol: float | None) -> bool:
+    """True when the first control point of ``pa`` is near an end of ``pb`` in x (cheap gate).
+
+    Such pairs go through :func:`intersect`, whose :func:`~relief_cad.contacts.whole_overlap` answers
+    coincident curves before clipping (their slowest case). ``tol`` None: exact equality.
+    """
+    x0 = pa.item(0)
+    gap = min(abs(x0 - pb.item(0)), abs(x0 - pb.item(-2)))
+    return gap <= tol if tol is not None else gap == 0.0
+
+
 def _refined(a: RationalBezier, b: RationalBezier, res: IntersectionList, tol: float) -> IntersectionList:
     """The kernel's result decided by :func:`relief_cad.contacts.refine_contacts`."""
     if not needs_refining(a, b, res):
@@ -337,9 +348,8 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
     # the default, or the given tol raised to the data's rounding level (one rule: resolve_tolerance)
     ftol = resolve_tolerance(check_tol(tol), a, b)
     pb = b.control_points
-    x0 = pa.item(0)  # the first x decides for almost every pair (a scalar read costs 50 ns)
-    whole = whole_overlap(a, b, ftol) if (
-        abs(x0 - pb.item(0)) <= ftol or abs(x0 - pb.item(-2)) <= ftol) else None
+    # the first x decides for almost every pair (a scalar read costs 50 ns)
+    whole = whole_overlap(a, b, ftol) if _may_coincide(pa, pb, ftol) else None
     if whole is not None:  # coincident curves: the clipping's slowest case, decided by geometry
         return IntersectionList([whole], tol_used=ftol)
     # a RationalBezier's arrays are float64: the kernel takes them as they are (strided views too)
@@ -535,7 +545,7 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
             check_curve(b, f"pairs[{k}][1]")
         pa = a.control_points
         pb = b.control_points
-        if pa.shape[1] == 2 and pb.shape[1] == 2:
+        if pa.shape[1] == 2 and pb.shape[1] == 2 and not _may_coincide(pa, pb, ftol):
             planar.append(k)
             cps.append(pa)
             cps.append(pb)
@@ -570,6 +580,7 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
             if len(items) > 1:
                 items.sort(key=lambda x: x.t[0] if isinstance(x, Overlap) else x.t)
             boxes = out_boxes[j]
-            out[k] = (IntersectionList(items, (), float(tols[j])) if not boxes
-                      else finish(IntersectionList(items, boxes, float(tols[j])), on_budget))
+            used = float(tols[j])
+            listed = _with_tol(_refined(*plist[k], IntersectionList(items, boxes, used), used), used)
+            out[k] = finish(listed, on_budget) if boxes else listed
     return [o if o is not None else IntersectionList() for o in out]

@@ -494,11 +494,11 @@ def _solve_packed(jobs: list[_Job], tol: float) -> list[list[_Found]]:
 def _solve(jobs: list[_Job], tol: float) -> list[list[_Found]]:
     """Run the core intersector on every job; planar two-curve jobs in one batched call."""
     answers: list[list[_Found] | None] = [None] * len(jobs)
-    packed = [k for k, job in enumerate(jobs) if job.packed]
+    packed = [k for k, job in enumerate(jobs) if job.packed and not _ends_meet(job, tol)]
     if packed:
         for k, found in zip(packed, _solve_packed([jobs[k] for k in packed], tol), strict=True):
-            answers[k] = found
-    if len(packed) == len(jobs):
+            answers[k] = found if _final(found) else None
+    if all(a is not None for a in answers):
         return answers  # type: ignore[return-value]
     core, many = _core()
     batch = [
@@ -511,8 +511,32 @@ def _solve(jobs: list[_Job], tol: float) -> list[list[_Found]]:
             answers[k] = _as_found(res)
     for k, job in enumerate(jobs):
         if answers[k] is None:
+            if job.packed:  # a pair the batch kernel did not settle (see _final), or whose ends meet
+                job.ca, job.cb = _curve2d(job.ea, job.i), _curve2d(job.eb, job.j)
             answers[k] = _as_found(core(job.ca, job.cb, tol=tol))
     return [a if a is not None else [] for a in answers]
+
+
+def _final(found: list[_Found]) -> bool:
+    """True when the batch kernel's answer needs no post-pass: only crossings inside both segments.
+
+    Overlaps, tangent contacts and meetings at a segment's end go through ``relief_cad.intersect``,
+    whose post-pass decides them by geometry (coincident stretches, contact kinds, zero-length end
+    derivatives), so the CAD layer answers as the core does.
+    """
+    return all(f[0] == "crossing" and 0.0 < f[1] < 1.0 and 0.0 < f[2] < 1.0 for f in found)
+
+
+def _ends_meet(job: _Job, tol: float) -> bool:
+    """True when an end of segment ``i`` of ``ea`` lies within ``tol`` of an end of segment ``j`` of ``eb``.
+
+    Such pairs may coincide (a duplicate edge), the clipping's slowest case: they go through
+    ``relief_cad.intersect``, which answers coincident curves before clipping.
+    """
+    ra, rb = job.ea.rows[job.i], job.eb.rows[job.j]
+    ends_a = [[c / r[-1] for c in r[:-1]] for r in (ra[0], ra[-1])]
+    ends_b = [[c / r[-1] for c in r[:-1]] for r in (rb[0], rb[-1])]
+    return any(max(abs(x - y) for x, y in zip(p, q, strict=True)) <= tol for p in ends_a for q in ends_b)
 
 
 def _as_found(results: Any) -> list[_Found]:

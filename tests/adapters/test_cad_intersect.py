@@ -584,3 +584,25 @@ def test_circles_in_perpendicular_planes_meet_in_space():
     assert hit.t in (0.0, pytest.approx(0.0, abs=1e-9), pytest.approx(2 * math.pi, abs=1e-9))
     check_on_edges([hit])
     matches([hit], occt_intersections(located(c1), located(c2)))
+
+
+@pytest.mark.parametrize("pts", [[(0, 0), (1, 0), (1, 0.125), (0, -0.375), (0, 1)],  # the fuzz's case
+                                 [(0, 0), (3, 1), (-2, 1), (1, 0)],  # a loop
+                                 [(0, 0), (1, 0), (1, 0), (0, 0), (0, 1)],  # repeated points, a fold
+                                 [(0, 0), (1.5, 0), (-0.5, 0.5), (0, 1)]])
+def test_duplicate_bezier_edges_are_one_overlap_as_in_the_core(pts):
+    # the CAD layer's batch kernel call had no post-pass: a duplicate looping edge came back as a
+    # row of "tangent" points (found by tests/adapters/test_fuzz_cad.py)
+    make = lambda: bd.Edge.make_bezier(*[(x, y, 0.0) for x, y in pts])  # noqa: E731
+    a, b = make(), make()
+    for res in (api.intersections(a, b), api.intersections(b, a), api.intersections(a, b.reversed())):
+        assert len(res) == 1 and isinstance(res[0], EdgeOverlap), res
+        assert sorted(res[0].t) == [0.0, 1.0] and sorted(res[0].u) == [0.0, 1.0]
+
+
+def test_a_chord_and_its_arc_meet_at_their_two_ends():
+    arc = bd.Edge.make_three_point_arc((0, 0, 0), (1, 1, 0), (2, 0, 0))
+    chord = bd.Edge.make_line((0, 0, 0), (2, 0, 0))
+    for res in (api.intersections(arc, chord), api.intersections(chord, arc)):
+        assert [type(r) for r in res] == [EdgeIntersection, EdgeIntersection], res
+        assert sorted(tuple(round(c, 12) for c in r.point) for r in res) == [(0, 0, 0), (2, 0, 0)]

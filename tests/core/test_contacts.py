@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from relief_cad import RationalBezier, intersect
+from relief_cad import RationalBezier, intersect, intersect_many
 from relief_cad.contacts import _double_root, _foot, curve_direction, refine_self
 from relief_cad.results import Intersection, Overlap
 
@@ -151,3 +151,11 @@ def test_curves_sharing_only_their_end_points_are_two_crossings_not_an_overlap()
         res = intersect(a, b)
         assert not res.overlaps and len(res) == 2, res
         assert {(r.t, r.u) for r in res} <= {(0.0, 0.0), (0.0, 1.0), (1.0, 0.0), (1.0, 1.0)}, res
+
+
+def test_intersect_many_answers_a_looping_curve_against_itself_as_intersect_does() -> None:
+    # the batch path had no post-pass: 30 "tangent" points and the loop's crossing, not one Overlap
+    c = RationalBezier([[0, 0], [1, 0], [1, 0.125], [0, -0.375], [0, 1]])
+    for b in (c, RationalBezier(c.control_points.copy()), c.reversed()):
+        assert intersect_many([(c, b)])[0] == intersect(c, b)
+        assert len(intersect(c, b)) == 1 and isinstance(intersect(c, b)[0], Overlap)
