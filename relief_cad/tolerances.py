@@ -30,6 +30,7 @@ from typing import TYPE_CHECKING, Union
 
 import numpy as np
 
+from ._kernels.bezier import _sampled_extent
 from ._types import FloatArray
 
 if TYPE_CHECKING:
@@ -73,6 +74,23 @@ _EPS = float(np.finfo(np.float64).eps)
 _SAMPLES = 65
 """Most parameters sampled per curve for its size (keeps the cost O(n^2) in the degree)."""
 
+_PARAMS: list[FloatArray] = []
+"""``_PARAMS[m]`` is ``np.linspace(0.0, 1.0, m)`` (read-only): the parameters sampled on a curve."""
+
+
+def _params() -> list[FloatArray]:
+    """:data:`_PARAMS`, made at the first call (in one assignment: another thread sees it empty or whole)."""
+    if not _PARAMS:
+        _PARAMS[:] = [_linspace(m) for m in range(_SAMPLES + 1)]
+    return _PARAMS
+
+
+def _linspace(m: int) -> FloatArray:
+    t = np.linspace(0.0, 1.0, m)
+    t.flags.writeable = False
+    return t
+
+
 CurveOrPoints = Union["RationalBezier", FloatArray, Iterable[FloatArray]]
 
 
@@ -101,8 +119,13 @@ def default_tolerance(*inputs: CurveOrPoints) -> float:
     >>> default_tolerance(steep) < 1e-9 * 1e6
     True
     """
-    from ._checks import as_real_array, check_finite
     from .curves import RationalBezier
+
+    if inputs and all(isinstance(item, RationalBezier) for item in inputs):
+        fast = _sampled_extent(inputs, _params(), _SAMPLES)  # compiled; the same bits as below
+        if fast is not None:  # else degenerate samples: the general path raises or handles them
+            return _tolerance_at(*fast)
+    from ._checks import as_real_array, check_finite
     from .errors import InputTypeError
 
     if not inputs:
@@ -134,7 +157,16 @@ def _tolerance_of(extents: list[FloatArray], coords: list[FloatArray]) -> float:
     scale = max(big, float(np.max(np.abs(stacked))))
     if scale == 0.0:
         return 1e-300
-    size = float(np.linalg.norm((stacked.max(axis=0) - stacked.min(axis=0)) / scale)) * scale
+    return _tolerance_at((stacked.max(axis=0) - stacked.min(axis=0)) / scale, scale, big)
+
+
+def _tolerance_at(diag: FloatArray, scale: float, big: float) -> float:
+    """The rule of the module docstring from the scaled bounding-box diagonal ``diag`` (``scale > 0``).
+
+    ``math.sqrt(diag.dot(diag))`` is what ``np.linalg.norm(diag)`` computes for a 1-D array (the
+    same dot product, then a correctly rounded square root), without its overhead.
+    """
+    size = math.sqrt(diag.dot(diag)) * scale
     tol = RELATIVE_TOLERANCE * size + ROUNDING_ULPS * _EPS * big
     if not math.isfinite(tol):
         return _floor(big)

@@ -270,3 +270,105 @@ def _homog_into(
         H[i, 0] = w * ((P[i, 0] - cx) * scale)
         H[i, 1] = w * ((P[i, 1] - cy) * scale)
         H[i, 2] = w
+
+
+def _sampled_extent(curves: tuple, params: list, samples: cython.Py_ssize_t):
+    """Scaled bounding-box diagonal of rational curves sampled along themselves (the default tolerance).
+
+    ``curves`` are :class:`~relief_cad.curves.RationalBezier` (their ``homogeneous`` rows, shape
+    ``(n + 1, d + 1)`` with the weights last, and their ``control_points`` are read); a curve of
+    degree ``n`` is sampled at the parameters ``params[min(2 n + 3, samples)]`` (``params[m]`` is
+    ``np.linspace(0.0, 1.0, m)``), with the same floating-point operations, in the same order, as
+    :func:`relief_cad.curves._decasteljau` followed by the division by the weight of
+    ``RationalBezier._eval``: the samples are the bits of ``RationalBezier.evaluate``. A curve of
+    fewer coordinates than the others counts as lying in ``x_d = 0``.
+
+    With ``lo`` and ``hi`` the per-coordinate minimum and maximum of all the samples, ``big`` the
+    largest ``|x|`` of the control points and ``scale = max(big, max |sample|)``, returns
+    ``((hi - lo) / scale, scale, big)``: the same bits as
+    :func:`relief_cad.tolerances._tolerance_of` forms from the stacked samples (minima and maxima
+    are exact). Returns None when a curve has degree 0, a sampled weight is not positive or a
+    sampled coordinate is not finite (the general path then raises or handles them), or when
+    ``scale`` is 0.
+    """
+    H: cython.const[cython.double][:, :]
+    T: cython.const[cython.double][:]
+    P: cython.const[cython.double][:, :]
+    wk: cython.double[:, :]
+    out: cython.double[:]
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    c: cython.Py_ssize_t
+    q: cython.Py_ssize_t
+    r: cython.Py_ssize_t
+    n: cython.Py_ssize_t
+    d: cython.Py_ssize_t
+    t: cython.double
+    s: cython.double
+    w: cython.double
+    x: cython.double
+    big: cython.double = 0.0
+    scale: cython.double
+    ncurves: cython.Py_ssize_t = len(curves)
+    dim: cython.Py_ssize_t = 0
+    rows: cython.Py_ssize_t = 0
+    hs = [curve.homogeneous for curve in curves]
+    for j in range(ncurves):
+        dim = max(dim, hs[j].shape[1] - 1)
+        rows = max(rows, hs[j].shape[0])
+    wk = np.empty((rows + 2, dim + 1))  # de Casteljau rows, then the minima and the maxima
+    lo: cython.Py_ssize_t = rows
+    hi: cython.Py_ssize_t = rows + 1
+    for c in range(dim):
+        wk[lo, c] = _INF
+        wk[hi, c] = -_INF
+    for j in range(ncurves):
+        H = hs[j]
+        n = H.shape[0] - 1
+        d = H.shape[1] - 1
+        if n < 1:
+            return None
+        P = curves[j].control_points
+        for i in range(P.shape[0]):
+            for c in range(P.shape[1]):
+                if abs(P[i, c]) > big:
+                    big = abs(P[i, c])
+        T = params[min(2 * n + 3, samples)]
+        for q in range(T.shape[0]):
+            t = T[q]
+            s = 1 - t
+            for i in range(n + 1):
+                for c in range(d + 1):
+                    wk[i, c] = H[i, c]
+            # _decasteljau: b[:, : n + 1 - r] = s * b[:, : n + 1 - r] + tt * b[:, 1 : n + 2 - r]
+            for r in range(1, n):
+                for i in range(n + 1 - r):
+                    for c in range(d + 1):
+                        wk[i, c] = s * wk[i, c] + t * wk[i + 1, c]
+            # value = s * b0 + tt * b1, then _eval: pts = value[:, :-1] / w
+            w = s * wk[0, d] + t * wk[1, d]
+            if not w > 0.0:
+                return None
+            for c in range(d):
+                x = (s * wk[0, c] + t * wk[1, c]) / w
+                if not (-_INF < x < _INF):
+                    return None
+                if x < wk[lo, c]:
+                    wk[lo, c] = x
+                if x > wk[hi, c]:
+                    wk[hi, c] = x
+        for c in range(d, dim):  # padded with zeros, as by np.hstack in _tolerance_of
+            if 0.0 < wk[lo, c]:
+                wk[lo, c] = 0.0
+            if 0.0 > wk[hi, c]:
+                wk[hi, c] = 0.0
+    scale = big
+    for c in range(dim):
+        scale = max(scale, abs(wk[lo, c]), abs(wk[hi, c]))
+    if scale == 0.0:
+        return None
+    diag = np.empty(dim)
+    out = diag
+    for c in range(dim):
+        out[c] = (wk[hi, c] - wk[lo, c]) / scale
+    return diag, float(scale), float(big)
