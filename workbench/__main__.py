@@ -38,7 +38,7 @@ commands:
   compare     relief_cad vs OCCT on every pair of a corpus, or of STEP files given directly
               (all cores, or a Dask cluster; resumable)
   report      a self-contained HTML report of one or several compare runs
-  bench       the benchmarks (planar, cad, space, arrange) as tables and JSON
+  bench       the benchmarks (planar, cad, space, arrange, families, degrees) as tables and JSON
   quickstart  compare + report on the bundled corpus into ./relief_cad_report/
 
 exit status: 0 everything asked for was done; 1 some items or inputs failed (listed);
@@ -331,8 +331,8 @@ def build_parser() -> argparse.ArgumentParser:
     )
     r.add_argument("--max-pictures", type=int, default=200, help="at most this many pictures (default 200)")
     r.set_defaults(func=_cmd_report)
-    b = sub.add_parser("bench", help="benchmarks: planar, cad, space, arrange (default all)")
-    b.add_argument("names", nargs="*", help="planar, cad, space, arrange or all")
+    b = sub.add_parser("bench", help="the benchmarks (default: all of them)")
+    b.add_argument("names", nargs="*", help="planar, cad, space, arrange, families, degrees or all")
     b.add_argument("--json", default="bench.json", help="write results here (default bench.json)")
     b.set_defaults(func=_cmd_bench)
     q = sub.add_parser(

@@ -27,6 +27,7 @@ BENCHMARKS = {
     "space": f"{_PKG}.bench_space",
     "arrange": f"{_PKG}.bench_arrange",  # issue 13: arrange vs BOPAlgo_Builder
     "families": f"{_PKG}.bench_families",
+    "degrees": f"{_PKG}.bench_degrees",  # issue 16: cost against the degree, up to the largest
 }
 
 

@@ -8,7 +8,6 @@ import sys
 from pathlib import Path
 
 import numpy as np
-import pytest
 from hypothesis import Phase, assume, given, note, settings
 from hypothesis import strategies as st
 
@@ -70,8 +69,9 @@ def safe(a: RationalBezier, b: RationalBezier | None) -> list[Intersection | Ove
         return None
 
 
-@pytest.mark.xfail(strict=False, reason="known open defect after the merge of the compiled core, contacts and the input layer (issue 12 follow-up): swap symmetry of space contacts at repeated control points")
-# no shrinking: while this stays a known failure, shrinking its counterexample cost 14 min of CI
+# was a non-strict xfail (swap symmetry of space contacts at repeated control points); passes since
+# the kernels' coincidence-test fix and the coplanar fallback
+# no shrinking: shrinking a counterexample of this property once cost 14 min of CI
 @settings(max_examples=300, phases=(Phase.explicit, Phase.reuse, Phase.generate))
 @given(space_pair())
 def test_no_exception_but_relief_cad_errors_and_swap_symmetry(pair: tuple[RationalBezier, RationalBezier]) -> None:
