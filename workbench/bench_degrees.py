@@ -2,7 +2,7 @@
 
 For random curves of degree 10, 100, 200 and :data:`relief_cad._checks.MAX_DEGREE` (256; a
 degree of 500 or 1000 is refused with ``DegreeError``), in the plane, with seeded control points in
-the unit square, it times (best of ``repeat`` runs each, seconds):
+the unit square, it times (:func:`.timing.best_time`, best of ``repeat`` runs each, seconds):
 
 * ``default_tolerance(c)``: the default tolerance, which samples the curve;
 * ``intersect(c)``: the self-intersection;
@@ -14,8 +14,6 @@ Run ``python -m workbench bench degrees``; :func:`run` returns the table as a li
 
 from __future__ import annotations
 
-import time
-from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -23,18 +21,11 @@ import numpy as np
 from relief_cad import RationalBezier, default_tolerance, intersect
 from relief_cad._checks import MAX_DEGREE
 
+from .timing import best_time
+
 __all__ = ["DEGREES", "run"]
 
 DEGREES = (10, 100, 200, MAX_DEGREE)
-
-
-def _best(fn: Callable[[], Any], repeat: int) -> float:
-    best = float("inf")
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t0)
-    return best
 
 
 def _row(degree: int, repeat: int) -> dict[str, Any]:
@@ -44,15 +35,15 @@ def _row(degree: int, repeat: int) -> dict[str, Any]:
     found = len(intersect(c, line, on_budget="return"))
     return {
         "degree": degree,
-        "default_tolerance s": _best(lambda: default_tolerance(c), repeat),
-        "self-intersection s": _best(lambda: intersect(c, on_budget="return"), repeat),
-        "against itself s": _best(lambda: intersect(c, c, on_budget="return"), repeat),
-        "against a line s": _best(lambda: intersect(c, line, on_budget="return"), repeat),
+        "default_tolerance s": best_time(lambda: default_tolerance(c), repeat=repeat),
+        "self-intersection s": best_time(lambda: intersect(c, on_budget="return"), repeat=repeat),
+        "against itself s": best_time(lambda: intersect(c, c, on_budget="return"), repeat=repeat),
+        "against a line s": best_time(lambda: intersect(c, line, on_budget="return"), repeat=repeat),
         "line crossings": found,
     }
 
 
-def run(repeat: int = 3) -> list[dict[str, Any]]:
+def run(repeat: int = 2) -> list[dict[str, Any]]:
     """One row per degree of :data:`DEGREES` (seconds, best of ``repeat``)."""
     return [_row(d, repeat) for d in DEGREES]
 
