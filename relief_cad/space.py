@@ -271,9 +271,10 @@ def _coplanar_rows(ha: FloatArray, hb: FloatArray, tol: float, budget: int) -> F
     """
     pa = ha[:, :3] / ha[:, 3:]
     pb = hb[:, :3] / hb[:, 3:]
-    centre = np.vstack([pa, pb]).mean(axis=0)
-    axes = np.linalg.svd(np.vstack([pa, pb]) - centre)[2]  # rows: in-plane, in-plane, normal
-    if float(np.max(np.abs((np.vstack([pa, pb]) - centre) @ axes[2]))) > tol:
+    both = np.vstack([pa, pb])
+    centre = both.mean(axis=0)
+    axes = np.linalg.svd(both - centre)[2]  # rows: in-plane, in-plane, normal
+    if float(np.max(np.abs((both - centre) @ axes[2]))) > tol:
         return None
     flat = intersect_one_kernel((pa - centre) @ axes[:2].T, ha[:, 3].copy(), (pb - centre) @ axes[:2].T,
                                 hb[:, 3].copy(), tol, budget)

@@ -491,13 +491,17 @@ def _solve_packed(jobs: list[_Job], tol: float) -> list[list[_Found]]:
     return out
 
 
-def _solve(jobs: list[_Job], tol: float) -> list[list[_Found]]:
-    """Run the core intersector on every job; planar two-curve jobs in one batched call."""
+def _solve(jobs: list[_Job], tol: float, self_mode: bool = False) -> list[list[_Found]]:
+    """Run the core intersector on every job; planar two-curve jobs in one batched call.
+
+    ``self_mode``: the self-intersections of one shape, whose end-to-end contacts (a vertex shared by
+    two edges, a joint of two segments) are dropped later, so the batch kernel's answer stands there.
+    """
     answers: list[list[_Found] | None] = [None] * len(jobs)
     packed = [k for k, job in enumerate(jobs) if job.packed and not _ends_meet(job, tol)]
     if packed:
         for k, found in zip(packed, _solve_packed([jobs[k] for k in packed], tol), strict=True):
-            answers[k] = found if _final(found) else None
+            answers[k] = found if _final(jobs[k], found, self_mode) else None
     if all(a is not None for a in answers):
         return answers  # type: ignore[return-value]
     core, many = _core()
@@ -517,26 +521,45 @@ def _solve(jobs: list[_Job], tol: float) -> list[list[_Found]]:
     return [a if a is not None else [] for a in answers]
 
 
-def _final(found: list[_Found]) -> bool:
-    """True when the batch kernel's answer needs no post-pass: only crossings inside both segments.
+def _final(job: _Job, found: list[_Found], self_mode: bool = False) -> bool:
+    """True when the batch kernel's answer needs no post-pass (the rule of the core's ``needs_refining``).
 
-    Overlaps, tangent contacts and meetings at a segment's end go through ``relief_cad.intersect``,
-    whose post-pass decides them by geometry (coincident stretches, contact kinds, zero-length end
-    derivatives), so the CAD layer answers as the core does.
+    Overlaps, tangent contacts and meetings at an end whose derivative vanishes (a repeated end
+    control point) go through ``relief_cad.intersect``, whose post-pass decides them by geometry.
+    The joint of two consecutive segments of one edge, and in ``self_mode`` any point contact at an
+    end of both segments, are final: the results drop them (a joint, a vertex two edges share).
     """
-    return all(f[0] == "crossing" and 0.0 < f[1] < 1.0 and 0.0 < f[2] < 1.0 for f in found)
+    joint = job.ea is job.eb and job.j == job.i + 1
+    for kind, t, u, *_ in found:
+        if (joint and t == 1.0 and u == 0.0) or (
+                self_mode and kind != "overlap" and t in (0.0, 1.0) and u in (0.0, 1.0)):
+            continue
+        if kind != "crossing" or _singular(job.ea.rows[job.i], t) or _singular(job.eb.rows[job.j], u):
+            return False
+    return True
+
+
+def _singular(rows: list[list[float]], s: float) -> bool:
+    """True when ``s`` is an end of the segment with homogeneous ``rows`` where its derivative vanishes."""
+    if s != 0.0 and s != 1.0:
+        return False
+    p, q = (rows[0], rows[1]) if s == 0.0 else (rows[-1], rows[-2])
+    return all(x / p[-1] == y / q[-1] for x, y in zip(p[:-1], q[:-1], strict=True))
 
 
 def _ends_meet(job: _Job, tol: float) -> bool:
-    """True when an end of segment ``i`` of ``ea`` lies within ``tol`` of an end of segment ``j`` of ``eb``.
+    """True when both ends of segment ``i`` of ``ea`` are within ``tol`` of those of segment ``j`` of ``eb``.
 
     Such pairs may coincide (a duplicate edge), the clipping's slowest case: they go through
     ``relief_cad.intersect``, which answers coincident curves before clipping.
     """
     ra, rb = job.ea.rows[job.i], job.eb.rows[job.j]
-    ends_a = [[c / r[-1] for c in r[:-1]] for r in (ra[0], ra[-1])]
-    ends_b = [[c / r[-1] for c in r[:-1]] for r in (rb[0], rb[-1])]
-    return any(max(abs(x - y) for x, y in zip(p, q, strict=True)) <= tol for p in ends_a for q in ends_b)
+    a0, a1, b0, b1 = ([c / r[-1] for c in r[:-1]] for r in (ra[0], ra[-1], rb[0], rb[-1]))
+
+    def near(p: list[float], q: list[float]) -> bool:
+        return max(abs(x - y) for x, y in zip(p, q, strict=True)) <= tol
+
+    return (near(a0, b0) and near(a1, b1)) or (near(a0, b1) and near(a1, b0))
 
 
 def _as_found(results: Any) -> list[_Found]:
@@ -715,7 +738,7 @@ def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float, lis
         edge_pairs.append((ea, eb, same))
         jobs.extend(_pair_jobs(ea, eb, same, ftol, planar, len(everyone) == (1 if same else 2)))
     per_pair: dict[tuple[int, int], list[_Raw]] = {}
-    for job, found in zip(jobs, _solve(jobs, ftol), strict=True):
+    for job, found in zip(jobs, _solve(jobs, ftol, b is None), strict=True):
         if found:
             per_pair.setdefault((id(job.ea), id(job.eb)), []).extend(_raw_results(job, found))
     raws: list[_Raw] = []
