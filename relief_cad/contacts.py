@@ -40,6 +40,7 @@ from typing import Literal
 
 import numpy as np
 
+from ._kernels.polish import foot_newton
 from ._types import FloatArray
 from .curves import RationalBezier, _decasteljau
 from .results import Intersection, Overlap, Result
@@ -87,30 +88,16 @@ def _foot(b: RationalBezier, pts: FloatArray, enough: float = 0.0) -> tuple[Floa
     u = grid[seeds.ravel()]
     d2 = d2[np.repeat(np.arange(m), seeds.shape[1]), seeds.ravel()][:, None]
     dist = np.sqrt(d2.min(axis=1))
-    hod = b.hodograph()
-    delta = 0.5 / n
-    stalled = 0
-    for _ in range(_NEWTON_STEPS):
-        before = dist  # safeguarded: a step is kept only where it brings b closer
-        r = b.evaluate(u) - pts
-        d1 = hod.evaluate(u)
-        step = (r * d1).sum(axis=1) / np.maximum((d1 * d1).sum(axis=1), 1e-300)
-        # the Newton step, damped (halved, quartered: next to a double point the full step lands on
-        # the other branch and is refused), and two shrinking probes that leave stationary points
-        # (a fold tip)
-        for trial in (np.clip(u - step, 0.0, 1.0), np.clip(u - 0.5 * step, 0.0, 1.0),
-                      np.clip(u - 0.25 * step, 0.0, 1.0), np.clip(u + delta, 0.0, 1.0),
-                      np.clip(u - delta, 0.0, 1.0)):
-            tdist = np.sqrt(((b.evaluate(trial) - pts) ** 2).sum(axis=1))
-            better = tdist < dist
-            u = np.where(better, trial, u)
-            dist = np.where(better, tdist, dist)
-        delta *= 0.5
-        if np.all(dist <= enough):
-            break
-        stalled = stalled + 1 if np.all(dist >= before * (1.0 - 1e-6)) else 0
-        if stalled >= 3:  # every point at its local minimum (the probes gain nothing more)
-            break
+    # the safeguarded Newton loop, compiled (the same operations and order as the numpy form it
+    # replaced: the same bits): from the same u, the Newton step, damped (halved, quartered: next
+    # to a double point the full step lands on the other branch and is refused), and two shrinking
+    # probes that leave stationary points (a fold tip); a trial is kept only where it brings b
+    # closer; stop once every distance is <= enough, or when three steps in a row gain nothing
+    # (every point at its local minimum)
+    u = np.array(u, dtype=np.float64)
+    if not foot_newton(b.homogeneous, b.hodograph().homogeneous, np.ascontiguousarray(pts, dtype=np.float64),
+                       u, dist, enough, 0.5 / n, _NEWTON_STEPS, 1.0 - 1e-6):
+        b.evaluate(np.array([np.nan]))  # a NaN trial (overflowed data): evaluate's NonFiniteError
     k = seeds.shape[1]
     best = np.argmin(dist.reshape(m, k), axis=1)
     return u.reshape(m, k)[np.arange(m), best], dist.reshape(m, k)[np.arange(m), best]

@@ -28,6 +28,7 @@ from typing import overload
 import numpy as np
 
 from ._checks import as_real_array, check_count, check_degree, check_finite, check_param, check_weights
+from ._kernels.bezier import decasteljau_rows
 from ._types import FloatArray, ParamsLike, PointsLike
 from .errors import (
     DegenerateCurveError,
@@ -43,8 +44,12 @@ __all__ = ["RationalBezier"]
 def _decasteljau(h: FloatArray, t: FloatArray) -> tuple[FloatArray, FloatArray]:
     """Evaluate homogeneous control points ``h`` (n+1, k) at parameters ``t`` (m,).
 
-    Returns the values ``H(t)`` (m, k) and derivatives ``H'(t)`` (m, k).
+    Returns the values ``H(t)`` (m, k) and derivatives ``H'(t)`` (m, k). Float data go through the
+    compiled :func:`relief_cad._kernels.bezier.decasteljau_rows` (the same operations in the same
+    order: the same bits); the numpy form below serves exact data (``Fraction`` objects).
     """
+    if h.dtype == np.float64 and t.dtype == np.float64:
+        return decasteljau_rows(h, t)  # type: ignore[no-any-return]
     n = h.shape[0] - 1
     m = t.shape[0]
     b = np.broadcast_to(h, (m,) + h.shape).copy()

@@ -1,6 +1,7 @@
 # C-level declarations of the hot helpers of bezier.py (pure-Python mode: this file augments it),
 # so that the other kernel modules call them as C functions (cimport), not through Python.
 # noexcept: they cannot raise (no allocation; bounds checks off), so no error check per call.
+cpdef void _rounds(const double[:, :] H, double t, double[:, :] B) noexcept
 cpdef void _segment(const double[:, :] H, double t0, double t1, double[:, :] out) noexcept
 cpdef (double, double, double, double) _cartesian(double[:, :] S, double[:, :] P, double[:] W) noexcept
 cpdef (double, double, double, double, double, double) _eval(const double[:, :] H, double t, double[:, :] wk) noexcept

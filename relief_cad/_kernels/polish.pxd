@@ -1,5 +1,5 @@
 # pure-Python mode: the helpers polish.py imports are called as C functions (see bezier.pxd, clip.pxd)
-from relief_cad._kernels.bezier cimport _cartesian, _eval, _segment
+from relief_cad._kernels.bezier cimport _cartesian, _eval, _rounds, _segment
 from relief_cad._kernels.clip cimport clip_range_kernel, fat_line_kernel
 
 # and its own helpers, called as C functions by planar.py (noexcept: none of them can raise,

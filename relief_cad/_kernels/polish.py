@@ -13,7 +13,7 @@ import cython
 import numpy as np
 from cython.cimports.libc.math import hypot, sqrt
 
-from .bezier import _cartesian, _eval, _segment
+from .bezier import _cartesian, _eval, _rounds, _segment
 from .clip import clip_range_kernel, fat_line_kernel
 
 _INF = cython.declare(cython.double, math.inf)  # a C constant (``math.inf`` is a Python lookup)
@@ -364,4 +364,126 @@ def _coincide(
         x, y, _a, _b, _c, _d = _eval(HA, tt, wa)
         if hypot(x - px, y - py) > tol:
             return False
+    return True
+
+
+@cython.cfunc
+@cython.exceptval(check=False)
+def _clip01(x: cython.double) -> cython.double:
+    """``np.clip(x, 0.0, 1.0)`` for one float: NaN stays NaN, and its max-then-min order."""
+    if x != x:
+        return x
+    r = x if x > 0.0 else 0.0
+    return r if r < 1.0 else 1.0
+
+
+@cython.cfunc
+@cython.exceptval(check=False)
+def _at(H: cython.const[cython.double][:, :], t: cython.double, B: cython.double[:, :],
+        X: cython.double[:]) -> cython.void:
+    """The point of the rational curve ``H`` ((n + 1, d + 1), weights last) at ``t`` into ``X`` (d,).
+
+    The operations of :meth:`relief_cad.RationalBezier.evaluate` in their order (homogeneous de
+    Casteljau, then the division by the weight), so the bits are the same; ``B`` is scratch of
+    ``H``'s shape.
+    """
+    c: cython.Py_ssize_t
+    k: cython.Py_ssize_t = H.shape[1]
+    s: cython.double = 1.0 - t
+    _rounds(H, t, B)
+    w: cython.double = s * B[0, k - 1] + t * B[1, k - 1]
+    for c in range(k - 1):
+        X[c] = (s * B[0, c] + t * B[1, c]) / w
+
+
+@cython.cfunc
+@cython.exceptval(check=False)
+def _gap(H: cython.const[cython.double][:, :], t: cython.double, P: cython.const[cython.double][:, :],
+         i: cython.Py_ssize_t, B: cython.double[:, :], X: cython.double[:]) -> cython.double:
+    """Distance from the point ``P[i]`` to the curve ``H`` at ``t`` (numpy's sum order)."""
+    c: cython.Py_ssize_t
+    _at(H, t, B, X)
+    acc: cython.double = (X[0] - P[i, 0]) * (X[0] - P[i, 0])
+    for c in range(1, P.shape[1]):
+        acc = acc + (X[c] - P[i, c]) * (X[c] - P[i, c])
+    return sqrt(acc)
+
+
+def foot_newton(
+    H: cython.const[cython.double][:, :],
+    HD: cython.const[cython.double][:, :],
+    P: cython.const[cython.double][:, :],
+    u: cython.double[:],
+    dist: cython.double[:],
+    enough: cython.double,
+    delta: cython.double,
+    steps: cython.Py_ssize_t,
+    stall: cython.double,
+) -> cython.bint:
+    """The safeguarded Newton iteration of :func:`relief_cad.contacts._foot`, in place on ``u``, ``dist``.
+
+    ``H`` is the curve and ``HD`` its hodograph (homogeneous rows, weights last), ``P`` (m, d)
+    the points, ``u`` (m,) and ``dist`` (m,) the seeds and their distances. Each step tries, from
+    the same ``u``, the Newton step, its half and quarter, and the probes ``u +- delta``, keeping
+    each trial that brings a point closer; ``delta`` halves per step. It stops after ``steps``
+    steps, once every distance is ``<= enough``, or after three steps in a row where no distance
+    fell below ``stall`` times its value before the step. The numpy form's operations in their
+    order: the same bits. Returns False when a trial parameter is NaN (overflowed data), where the
+    numpy form raised in :meth:`~relief_cad.RationalBezier.evaluate`.
+    """
+    i: cython.Py_ssize_t
+    c: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    _step: cython.Py_ssize_t
+    m: cython.Py_ssize_t = P.shape[0]
+    d: cython.Py_ssize_t = P.shape[1]
+    B: cython.double[:, :] = np.empty((max(H.shape[0], HD.shape[0]), max(H.shape[1], HD.shape[1])))
+    X: cython.double[:] = np.empty(d)
+    Y: cython.double[:] = np.empty(d)
+    trial: cython.double[:] = np.empty(5)
+    done: cython.bint
+    still: cython.bint
+    before: cython.double
+    ui: cython.double
+    num: cython.double
+    den: cython.double
+    step: cython.double
+    td: cython.double
+    stalled: cython.Py_ssize_t = 0
+    for _step in range(steps):
+        done = True
+        still = True
+        for i in range(m):
+            before = dist[i]
+            ui = u[i]
+            _at(H, ui, B, X)
+            _at(HD, ui, B, Y)
+            num = (X[0] - P[i, 0]) * Y[0]
+            den = Y[0] * Y[0]
+            for c in range(1, d):
+                num = num + (X[c] - P[i, c]) * Y[c]
+                den = den + Y[c] * Y[c]
+            if not (den >= 1e-300 or den != den):  # np.maximum(den, 1e-300), NaN kept
+                den = 1e-300
+            step = num / den
+            trial[0] = _clip01(ui - step)
+            trial[1] = _clip01(ui - 0.5 * step)
+            trial[2] = _clip01(ui - 0.25 * step)
+            trial[3] = _clip01(ui + delta)
+            trial[4] = _clip01(ui - delta)
+            for j in range(5):
+                if trial[j] != trial[j]:
+                    return False
+                td = _gap(H, trial[j], P, i, B, X)
+                if td < dist[i]:
+                    u[i] = trial[j]
+                    dist[i] = td
+            done = done and dist[i] <= enough
+            still = still and dist[i] >= before * stall
+        delta *= 0.5
+        if done:
+            break
+        stalled = stalled + 1 if still else 0
+        if stalled >= 3:
+            break
     return True

@@ -225,3 +225,28 @@ def test_bad_parameters_and_operations() -> None:
         RationalBezier(c)  # type: ignore[arg-type]
     with pytest.raises(ShapeError):
         c.embedded(4)
+
+
+def test_compiled_de_casteljau_gives_the_exact_values_on_dyadic_data() -> None:
+    """The compiled float path of ``_decasteljau`` against its numpy form run on exact rationals.
+
+    Dyadic control points and weights with small numerators, at parameters ``k / 8``: every
+    float operation is exact, so the two must agree to the last bit (values and derivatives,
+    degrees 1 to 8, planar and space rows).
+    """
+    from fractions import Fraction
+
+    from relief_cad.curves import _decasteljau
+
+    rng = np.random.default_rng(5)
+    ts = np.arange(9) / 8
+    exact_t = np.array([Fraction(int(k), 8) for k in range(9)], dtype=object)
+    for degree in range(1, 9):
+        for dim in (2, 3):
+            h = np.hstack([rng.integers(-8, 9, size=(degree + 1, dim)) / 8,
+                           rng.integers(1, 5, size=(degree + 1, 1)) / 4])
+            value, deriv = _decasteljau(h, ts)
+            exact_h = np.array([[Fraction(x) for x in row] for row in h.tolist()], dtype=object)
+            exact_value, exact_deriv = _decasteljau(exact_h, exact_t)
+            assert value.tolist() == exact_value.astype(float).tolist(), (degree, dim)
+            assert deriv.tolist() == exact_deriv.astype(float).tolist(), (degree, dim)
