@@ -95,12 +95,22 @@ def _foot(b: RationalBezier, pts: FloatArray, enough: float = 0.0) -> tuple[Floa
     # closer; stop once every distance is <= enough, or when three steps in a row gain nothing
     # (every point at its local minimum)
     u = np.array(u, dtype=np.float64)
-    if not foot_newton(b.homogeneous, b.hodograph().homogeneous, np.ascontiguousarray(pts, dtype=np.float64),
-                       u, dist, enough, 0.5 / n, _NEWTON_STEPS, 1.0 - 1e-6):
-        b.evaluate(np.array([np.nan]))  # a NaN trial (overflowed data): evaluate's NonFiniteError
+    _newton(b, pts, u, dist, enough, n)
     k = seeds.shape[1]
     best = np.argmin(dist.reshape(m, k), axis=1)
     return u.reshape(m, k)[np.arange(m), best], dist.reshape(m, k)[np.arange(m), best]
+
+
+def _newton(b: RationalBezier, pts: FloatArray, u: FloatArray, dist: FloatArray, enough: float,
+            n: int) -> None:
+    """The compiled Newton loop of :func:`_foot` on ``u`` and ``dist`` (m,) in place, ``n`` the grid's size.
+
+    A NaN trial (overflowed data) raises :meth:`~relief_cad.RationalBezier.evaluate`'s
+    :class:`~relief_cad.errors.NonFiniteError`, as the numpy form of the loop did.
+    """
+    if not foot_newton(b.homogeneous, b.hodograph().homogeneous, np.ascontiguousarray(pts, dtype=np.float64),
+                       u, dist, enough, 0.5 / n, _NEWTON_STEPS, 1.0 - 1e-6):
+        b.evaluate(np.array([np.nan]))
 
 
 def _surely_far(b: RationalBezier, pts: FloatArray, tol: float) -> bool:
@@ -141,25 +151,56 @@ def _coincide(a: RationalBezier, b: RationalBezier, t0: float, t1: float, u0: fl
 
 # ---------------------------------------------------------------------------- overlaps
 def _end_nodes(a: RationalBezier, b: RationalBezier, tol: float) -> set[tuple[float, float]]:
-    """Contacts at the curves' end points (exact where the end points are the same point)."""
+    """Contacts at the curves' end points (exact where the end points are the same point).
+
+    An end point through which the other curve passes more than once (a fold back through it, a
+    double point on it) gives one contact per passage: a curve that starts at a point, leaves
+    it and comes back along the other curve overlaps from where it comes back, not from its start.
+    """
     out: set[tuple[float, float]] = set()
     ends_b = (b.control_points[0], b.control_points[-1])
     for t, pt in ((0.0, a.control_points[0]), (1.0, a.control_points[-1])):
-        exact = [u for u, q in zip((0.0, 1.0), ends_b, strict=True) if np.array_equal(pt, q)]
-        if exact:
-            out.update((t, u) for u in exact)
-            continue
-        if _surely_far(b, pt[None, :], tol):
-            continue
-        fu, fd = _foot(b, pt[None, :], 0.25 * tol)
-        if fd[0] <= tol:
-            out.add((t, float(fu[0])))
+        found = [u for u, q in zip((0.0, 1.0), ends_b, strict=True) if np.array_equal(pt, q)]
+        if not found:
+            if _surely_far(b, pt[None, :], tol):
+                continue
+            fu, fd = _foot(b, pt[None, :], 0.25 * tol)
+            found = [float(fu[0])] if fd[0] <= tol else []
+        out.update((t, u) for u in found + _other_feet(b, pt, tol, found))
     for u, pt in ((0.0, ends_b[0]), (1.0, ends_b[1])):
-        if any(q[1] == u for q in out) or _surely_far(a, pt[None, :], tol):
-            continue
-        ft, fd = _foot(a, pt[None, :], 0.25 * tol)
-        if fd[0] <= tol:
-            out.add((float(ft[0]), u))
+        found = [q[0] for q in out if q[1] == u]
+        if not found:
+            if _surely_far(a, pt[None, :], tol):
+                continue
+            ft, fd = _foot(a, pt[None, :], 0.25 * tol)
+            found = [float(ft[0])] if fd[0] <= tol else []
+        out.update((t, u) for t in found + _other_feet(a, pt, tol, found))
+    return out
+
+
+def _other_feet(b: RationalBezier, pt: FloatArray, tol: float, known: list[float]) -> list[float]:
+    """Parameters of ``b`` apart from ``known`` (by over 1e-6) where ``b`` passes within ``tol`` of ``pt``.
+
+    The local minima of the grid distance that may lie within ``tol`` (grid distance up to ``tol``
+    plus the longest chord), each polished by the Newton iteration of :func:`_foot`; a passage
+    already known (or found twice) counts once. Most end points have one passage: then no Newton.
+    """
+    n = max(8, _SAMPLES_PER_DEGREE * 4 * (b.degree + 1))
+    grid = np.linspace(0.0, 1.0, n + 1)
+    vals = b.evaluate(grid)
+    d = np.sqrt(((vals - pt) ** 2).sum(axis=1))
+    chord = float(np.sqrt((np.diff(vals, axis=0) ** 2).sum(axis=1)).max())
+    left = np.concatenate([[np.inf], d[:-1]])
+    right = np.concatenate([d[1:], [np.inf]])
+    seeds = grid[(d <= left) & (d <= right) & (d <= tol + chord)]
+    seeds = [float(s) for s in seeds if all(abs(s - k) > 1.0 / n for k in known)]
+    out: list[float] = []
+    for s in seeds:
+        u = np.array([s])
+        dist = np.sqrt(((b.evaluate(u) - pt) ** 2).sum(axis=1))
+        _newton(b, pt[None, :], u, dist, 0.25 * tol, n)
+        if dist[0] <= tol and all(abs(u[0] - k) > 1e-6 for k in known + out):
+            out.append(float(u[0]))
     return out
 
 

@@ -153,14 +153,25 @@ def _planar(pa: FloatArray, wa: FloatArray, pb: FloatArray, wb: FloatArray, tol:
 
 
 def _may_coincide(pa: FloatArray, pb: FloatArray, tol: float | None) -> bool:
-    """True when the first control point of ``pa`` is near an end of ``pb`` in x (cheap gate).
+    """True when planar curves may be one coincident pair: a cheap gate before the geometric test.
 
     Such pairs go through :func:`intersect`, whose :func:`~relief_cad.contacts.whole_overlap` answers
-    coincident curves before clipping (their slowest case). ``tol`` None: exact equality.
+    coincident curves before clipping (their slowest case). That needs both end points of ``pa``
+    within ``tol`` of those of ``pb``, one way round or the other: checked here within ``2 tol`` (a
+    margin for the exact rescaling of huge coordinates there), on eight scalar reads (50 ns each),
+    so a pair that merely starts at the same x no longer pays for the test (25 us). ``tol`` None
+    (a batch with per-pair default tolerances, not yet known): the first x of ``pa`` equals an end
+    x of ``pb``.
     """
-    x0 = pa.item(0)
-    gap = min(abs(x0 - pb.item(0)), abs(x0 - pb.item(-2)))
-    return gap <= tol if tol is not None else gap == 0.0
+    ax0 = pa.item(0)
+    if tol is None:
+        return ax0 == pb.item(0) or ax0 == pb.item(-2)
+    lim = 2.0 * tol
+    ay0, ax1, ay1 = pa.item(1), pa.item(-2), pa.item(-1)
+    bx0, by0, bx1, by1 = pb.item(0), pb.item(1), pb.item(-2), pb.item(-1)
+    if abs(ax0 - bx0) <= lim and abs(ay0 - by0) <= lim and abs(ax1 - bx1) <= lim and abs(ay1 - by1) <= lim:
+        return True
+    return abs(ax0 - bx1) <= lim and abs(ay0 - by1) <= lim and abs(ax1 - bx0) <= lim and abs(ay1 - by0) <= lim
 
 
 def _refined(a: RationalBezier, b: RationalBezier, res: IntersectionList, tol: float) -> IntersectionList:

@@ -604,10 +604,16 @@ def test_curve_against_itself_at_the_largest_degree_answers() -> None:
                                    "[Overlap(t=(0.0, 1.0), u=(1.0, 0.0), kind='overlap')]"), proc.stderr
 
 
-@pytest.mark.xfail(strict=True, reason="open defect (contacts.whole_overlap, found by tests/adapters/test_fuzz_cad.py "
-                   "through cad.split): a curve that folds back along a line it shares its start with gets one "
-                   "Overlap from t = 0, though it leaves the line on (0, 2/3); split then loses a piece")
 def test_fold_back_overlap_starts_where_the_curve_comes_back() -> None:
+    """A curve that leaves a shared start point and comes back along the other curve (found by
+    tests/adapters/test_fuzz_cad.py through cad.split, which lost a piece): one Overlap from where
+    it comes back, and the start is a separate (tangent) contact; both argument orders."""
     a = RationalBezier([[0, 0], [-1, 0], [1, 0]])  # x(t) = 3t^2 - 2t: negative on (0, 2/3)
     b = RationalBezier([[0, 0], [0.5, 0]])
-    assert [o.t for o in intersect(a, b).overlaps] == [pytest.approx((2 / 3, (2 + math.sqrt(10)) / 6))]
+    back = (2 / 3, (2 + math.sqrt(10)) / 6)
+    res = intersect(a, b)
+    assert [o.t for o in res.overlaps] == [pytest.approx(back)] and [o.u for o in res.overlaps] == [(0.0, 1.0)]
+    assert [(p.t, p.u, p.kind) for p in res.points] == [(0.0, 0.0, "tangent")]
+    swapped = intersect(b, a)
+    assert [o.u for o in swapped.overlaps] == [pytest.approx(back)] and [o.t for o in swapped.overlaps] == [(0.0, 1.0)]
+    assert [(p.t, p.u, p.kind) for p in swapped.points] == [(0.0, 0.0, "tangent")]
