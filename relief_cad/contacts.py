@@ -68,10 +68,15 @@ _SINGULAR = 1e-9  # |derivative| / size below which the first non-vanishing deri
 
 
 # ---------------------------------------------------------------------------- distance to a curve
-def _foot(b: RationalBezier, pts: FloatArray, enough: float = 0.0) -> tuple[FloatArray, FloatArray]:
+def _foot(b: RationalBezier, pts: FloatArray, enough: float = 0.0,
+          each: bool = False) -> tuple[FloatArray, FloatArray]:
     """Closest parameters on ``b`` (shape (m,)) and distances (m,) for points ``pts`` (m, d).
 
-    Safeguarded Newton from the nearest of a grid; it stops once every distance is ``<= enough``.
+    Safeguarded Newton from the nearest of a grid; it stops once every distance is ``<= enough``:
+    that of every seed, or with ``each``, that of the best seed of each point. ``each`` is for
+    callers that only test the distances against a bound ``>= enough`` (the answer is the same:
+    the iteration only ever lowers a distance), where the other seeds, on other branches, never
+    get that close and kept the loop running to its step limit (5 ms at degree 8).
     """
     n = max(8, _SAMPLES_PER_DEGREE * 4 * (b.degree + 1))
     grid = np.linspace(0.0, 1.0, n + 1)
@@ -95,21 +100,23 @@ def _foot(b: RationalBezier, pts: FloatArray, enough: float = 0.0) -> tuple[Floa
     # closer; stop once every distance is <= enough, or when three steps in a row gain nothing
     # (every point at its local minimum)
     u = np.array(u, dtype=np.float64)
-    _newton(b, pts, u, dist, enough, n)
+    _newton(b, pts, u, dist, enough, n, seeds.shape[1] if each else 1)
     k = seeds.shape[1]
     best = np.argmin(dist.reshape(m, k), axis=1)
     return u.reshape(m, k)[np.arange(m), best], dist.reshape(m, k)[np.arange(m), best]
 
 
 def _newton(b: RationalBezier, pts: FloatArray, u: FloatArray, dist: FloatArray, enough: float,
-            n: int) -> None:
+            n: int, group: int = 1) -> None:
     """The compiled Newton loop of :func:`_foot` on ``u`` and ``dist`` (m,) in place, ``n`` the grid's size.
+
+    ``group``: the rows come in groups of that many seeds of one point (see ``foot_newton``).
 
     A NaN trial (overflowed data) raises :meth:`~relief_cad.RationalBezier.evaluate`'s
     :class:`~relief_cad.errors.NonFiniteError`, as the numpy form of the loop did.
     """
     if not foot_newton(b.homogeneous, b.hodograph().homogeneous, np.ascontiguousarray(pts, dtype=np.float64),
-                       u, dist, enough, 0.5 / n, _NEWTON_STEPS, 1.0 - 1e-6):
+                       u, dist, enough, 0.5 / n, _NEWTON_STEPS, 1.0 - 1e-6, group):
         b.evaluate(np.array([np.nan]))
 
 
@@ -143,7 +150,7 @@ def _coincide(a: RationalBezier, b: RationalBezier, t0: float, t1: float, u0: fl
     s = (np.arange(1, m + 1) - 0.5) / m
     for src, dst in ((pa, pb), (pb, pa)):
         pts = src.evaluate(s)
-        if not np.all(_foot(dst, pts, 0.25 * tol)[1] <= tol):
+        if not np.all(_foot(dst, pts, 0.25 * tol, each=True)[1] <= tol):
             return False
     span = float(np.ptp(pa.evaluate(np.linspace(0.0, 1.0, m)), axis=0).max())
     return span > 4.0 * tol

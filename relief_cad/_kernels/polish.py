@@ -419,15 +419,17 @@ def foot_newton(
     delta: cython.double,
     steps: cython.Py_ssize_t,
     stall: cython.double,
+    group: cython.Py_ssize_t,
 ) -> cython.bint:
     """The safeguarded Newton iteration of :func:`relief_cad.contacts._foot`, in place on ``u``, ``dist``.
 
     ``H`` is the curve and ``HD`` its hodograph (homogeneous rows, weights last), ``P`` (m, d)
     the points, ``u`` (m,) and ``dist`` (m,) the seeds and their distances. Each step tries, from
     the same ``u``, the Newton step, its half and quarter, and the probes ``u +- delta``, keeping
-    each trial that brings a point closer; ``delta`` halves per step. It stops after ``steps``
-    steps, once every distance is ``<= enough``, or after three steps in a row where no distance
-    fell below ``stall`` times its value before the step. The numpy form's operations in their
+    each trial that brings a point closer; ``delta`` halves per step. Rows come in consecutive
+    groups of ``group`` seeds of one point. It stops after ``steps`` steps, once every group has a
+    distance ``<= enough`` (``group`` 1: every row), or after three steps in a row where no
+    distance fell below ``stall`` times its value before the step. The numpy form's operations in their
     order: the same bits. Returns False when a trial parameter is NaN (overflowed data), where the
     numpy form raised in :meth:`~relief_cad.RationalBezier.evaluate`.
     """
@@ -449,6 +451,7 @@ def foot_newton(
     den: cython.double
     step: cython.double
     td: cython.double
+    best: cython.double = 0.0
     stalled: cython.Py_ssize_t = 0
     for _step in range(steps):
         done = True
@@ -478,7 +481,9 @@ def foot_newton(
                 if td < dist[i]:
                     u[i] = trial[j]
                     dist[i] = td
-            done = done and dist[i] <= enough
+            best = dist[i] if i % group == 0 else min(best, dist[i])
+            if i % group == group - 1:
+                done = done and best <= enough
             still = still and dist[i] >= before * stall
         delta *= 0.5
         if done:
