@@ -42,6 +42,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
+from numpy.typing import NDArray
 
 from ._checks import check_budget, check_on_budget, check_span, check_tol
 from ._kernels import (
@@ -294,6 +295,20 @@ def _monotone(points: FloatArray) -> bool:
     return bool(np.all(legs @ chord > 0.0))
 
 
+def _boxes_near(points: list[FloatArray], tol: float) -> NDArray[np.bool_]:
+    """``near[i, j]``: the control-point boxes of pieces ``i`` and ``j`` are within ``tol`` on every axis.
+
+    A curve lies in the hull of its control points, so pieces whose boxes are farther apart than
+    ``tol`` have no contact: the pair is not sent to the kernel (a retracing curve splits into
+    dozens of pieces near its fold, and most pairs of them lie apart).
+    """
+    lo = np.array([p.min(axis=0) for p in points])
+    hi = np.array([p.max(axis=0) for p in points])
+    apart = (lo[:, None, :] > hi[None, :, :] + tol) | (lo[None, :, :] > hi[:, None, :] + tol)
+    near: NDArray[np.bool_] = np.logical_not(apart.any(axis=2))
+    return near
+
+
 def _self_rows(curve: RationalBezier, tol: float, budget: int) -> FloatArray:
     """Self-intersections: split into monotone pieces, intersect every pair of pieces."""
     if is_point_like(curve, tol):
@@ -310,9 +325,12 @@ def _self_rows(curve: RationalBezier, tol: float, budget: int) -> FloatArray:
         stack.append((mid, s1, right, depth + 1))
         stack.append((s0, mid, left, depth + 1))
     pieces.sort(key=lambda p: p[0])
+    near = _boxes_near([p.control_points for _, _, p in pieces], tol)
     rows: list[FloatArray] = []
     for i, (a0, a1, pa) in enumerate(pieces):
         for j in range(i + 1, len(pieces)):
+            if not near[i, j]:
+                continue
             b0, b1, pb = pieces[j]
             found = _pair(pa.homogeneous, pb.homogeneous, tol, budget)
             for r in found:
