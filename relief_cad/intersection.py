@@ -97,7 +97,7 @@ from .errors import (
 )
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
 from .space import intersect_space
-from .tolerances import default_tolerance, resolve_tolerance, rounding_floor
+from .tolerances import _sampled_tolerance, default_tolerance, resolve_tolerance, rounding_floor
 
 __all__ = [
     "DEFAULT_BUDGET",
@@ -356,8 +356,9 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
     if b is None:
         ftol = resolve_tolerance(check_tol(tol), a)
         return finish(_with_tol(_self_planar(a.control_points, a.weights, ftol, nbudget), ftol), on_budget)
-    # the default, or the given tol raised to the data's rounding level (one rule: resolve_tolerance)
-    ftol = resolve_tolerance(check_tol(tol), a, b)
+    # the default, or the given tol raised to the data's rounding level (one rule: resolve_tolerance;
+    # _sampled_tolerance is its compiled default for two curves)
+    ftol = (_sampled_tolerance((a, b)) if tol is None else None) or resolve_tolerance(check_tol(tol), a, b)
     pb = b.control_points
     # the first x decides for almost every pair (a scalar read costs 50 ns)
     whole = whole_overlap(a, b, ftol) if _may_coincide(pa, pb, ftol) else None

@@ -110,10 +110,10 @@ def intersect_one_kernel(
 ):
     """One pair: the result rows (a single array return is cheaper to box than a tuple).
 
-    A pair whose boxes lie apart returns one shared read-only empty array.
+    A pair with no result (boxes apart, or nothing found) returns one shared read-only empty array.
     """
     if _boxes_apart(PA, PB, tol):
         return _NO_ROWS
     res = np.empty((8, RES_COLS))
     res, nres = intersect_pair_kernel(PA, WA, PB, WB, tol, budget, 0, res, 0)
-    return res[:nres]
+    return res[:nres] if nres else _NO_ROWS

@@ -281,7 +281,9 @@ def intersect_pair_kernel(
     # ---------------------------------------------------------------- overlaps
     ov: cython.double[:, :] = b4[0:4]
     nov: cython.Py_ssize_t = 0
-    used: cython.uchar[:] = np.zeros(8, dtype=np.uint8)
+    used: cython.uchar[:]
+    if nend >= 2:  # an allocation costs about a microsecond: only where there is a pair of ends
+        used = np.zeros(8, dtype=np.uint8)
     nsamp = max(24, na * nb + 4)
     for i in range(nend):
         for j in range(i + 1, nend):
@@ -451,6 +453,9 @@ def intersect_pair_kernel(
                 unres = _room(unres, nunres + 1)
                 unres[nunres, :] = stack[nstack, :]
                 nunres += 1
+
+    if ncand == 0 and nend == 0 and nunres == 0:
+        return res, nres  # nothing found (no ends, hence no overlaps): no cluster arrays to make
 
     # ---------------------------------------------------------------- clusters
     label: cython.Py_ssize_t[:] = np.arange(ncand, dtype=np.intp)
