@@ -97,7 +97,13 @@ from .errors import (
 )
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
 from .space import intersect_space
-from .tolerances import _sampled_tolerance, default_tolerance, resolve_tolerance, rounding_floor
+from .tolerances import (
+    _default_tolerances,
+    _sampled_tolerance,
+    default_tolerance,
+    resolve_tolerance,
+    rounding_floor,
+)
 
 __all__ = [
     "DEFAULT_BUDGET",
@@ -573,7 +579,8 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
         pts.flags.writeable = False
         wts.flags.writeable = False
         idx = np.arange(2 * len(planar), dtype=np.int64).reshape(-1, 2)
-        tols = np.array([resolve_tolerance(ftol, *plist[k]) for k in planar])
+        tols = (_default_tolerances([plist[k][0] for k in planar], [plist[k][1] for k in planar])
+                if ftol is None else np.array([resolve_tolerance(ftol, *plist[k]) for k in planar]))
         res = _batch_rows(pts, wts, offsets, idx, tols, nbudget, nworkers)
         out_items: list[list[Result]] = [[] for _ in planar]
         out_boxes: list[list[ParameterBox]] = [[] for _ in planar]

@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING, Union, cast
 
 import numpy as np
 
-from ._kernels.bezier import _sampled_extent
+from ._kernels.bezier import pair_tolerances, sampled_tolerance
 from ._types import FloatArray
 
 if TYPE_CHECKING:
@@ -151,13 +151,27 @@ def default_tolerance(*inputs: CurveOrPoints) -> float:
 def _sampled_tolerance(curves: tuple[RationalBezier, ...]) -> float | None:
     """:func:`default_tolerance` of curves known to be :class:`~relief_cad.RationalBezier` (hot path).
 
-    Compiled sampling (:func:`relief_cad._kernels.bezier._sampled_extent`, the same bits as the
-    general path), without :func:`default_tolerance`'s checks of the inputs' types (2 us of the
-    5 us it costs on a pair of cubics). None when a sample is degenerate: then the general path
-    raises or handles it.
+    Compiled (:func:`relief_cad._kernels.bezier.sampled_tolerance`: the samples, the rule of
+    :func:`_tolerance_at` and its order of operations, so the same bits as the general path),
+    without :func:`default_tolerance`'s checks of the inputs' types. None when a sample is
+    degenerate: then the general path raises or handles it.
     """
-    fast = _sampled_extent(curves, _params(), _SAMPLES)
-    return None if fast is None else _tolerance_at(*fast)
+    tol: float | None = sampled_tolerance(curves, _params(), _SAMPLES, RELATIVE_TOLERANCE,
+                                          ROUNDING_ULPS * _EPS)
+    return tol
+
+
+def _default_tolerances(first: list[RationalBezier], second: list[RationalBezier]) -> FloatArray:
+    """:func:`default_tolerance` of each pair ``(first[k], second[k])`` of curves, in one compiled call.
+
+    The same values as :func:`_sampled_tolerance` pair by pair (the batch's hot path: no Python per
+    pair); a pair with a degenerate sample gets the general path.
+    """
+    tols: FloatArray = pair_tolerances(first, second, _params(), _SAMPLES, RELATIVE_TOLERANCE,
+                                       ROUNDING_ULPS * _EPS)
+    for k in np.flatnonzero(np.isnan(tols)).tolist():
+        tols[k] = default_tolerance(first[k], second[k])
+    return tols
 
 
 def _tolerance_of(extents: list[FloatArray], coords: list[FloatArray]) -> float:
@@ -175,10 +189,14 @@ def _tolerance_of(extents: list[FloatArray], coords: list[FloatArray]) -> float:
 def _tolerance_at(diag: FloatArray, scale: float, big: float) -> float:
     """The rule of the module docstring from the scaled bounding-box diagonal ``diag`` (``scale > 0``).
 
-    ``math.sqrt(diag.dot(diag))`` is what ``np.linalg.norm(diag)`` computes for a 1-D array (the
-    same dot product, then a correctly rounded square root), without its overhead.
+    The squares of the diagonal's coordinates are summed in coordinate order, as the compiled
+    :func:`relief_cad._kernels.bezier.sampled_tolerance` does: the same bits on every machine (a
+    BLAS dot product's summation, or fused multiply-adds, depend on the CPU it dispatches to).
     """
-    size = math.sqrt(diag.dot(diag)) * scale
+    squares = 0.0
+    for x in diag.tolist():
+        squares = squares + x * x
+    size = math.sqrt(squares) * scale
     tol = RELATIVE_TOLERANCE * size + ROUNDING_ULPS * _EPS * big
     if not math.isfinite(tol):
         return _floor(big)

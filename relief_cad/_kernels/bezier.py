@@ -12,6 +12,7 @@ import math
 
 import cython
 import numpy as np
+from cython.cimports.libc.math import sqrt
 
 _INF = cython.declare(cython.double, math.inf)  # a C constant (``math.inf`` is a Python lookup)
 
@@ -324,95 +325,137 @@ def _homog_into(
         H[i, 2] = w
 
 
-def _sampled_extent(curves: tuple, params: list, samples: cython.Py_ssize_t):
-    """Scaled bounding-box diagonal of rational curves sampled along themselves (the default tolerance).
+@cython.cfunc
+@cython.exceptval(check=False)
+def _sample_into(H: cython.const[cython.double][:, :], P: cython.const[cython.double][:, :],
+                 T: cython.const[cython.double][:], wk: cython.double[:, :], lo: cython.Py_ssize_t,
+                 big: cython.double) -> cython.double:
+    """Fold the samples of the curve ``H`` at ``T`` into the box in rows ``lo``, ``lo + 1`` of ``wk``.
 
-    ``curves`` are :class:`~relief_cad.curves.RationalBezier` (their ``homogeneous`` rows, shape
-    ``(n + 1, d + 1)`` with the weights last, and their ``control_points`` are read); a curve of
-    degree ``n`` is sampled at the parameters ``params[min(2 n + 3, samples)]`` (``params[m]`` is
-    ``np.linspace(0.0, 1.0, m)``), with the same floating-point operations, in the same order, as
-    :func:`relief_cad.curves._decasteljau` followed by the division by the weight of
-    ``RationalBezier._eval``: the samples are the bits of ``RationalBezier.evaluate``. A curve of
-    fewer coordinates than the others counts as lying in ``x_d = 0``.
-
-    With ``lo`` and ``hi`` the per-coordinate minimum and maximum of all the samples, ``big`` the
-    largest ``|x|`` of the control points and ``scale = max(big, max |sample|)``, returns
-    ``((hi - lo) / scale, scale, big)``: the same bits as
-    :func:`relief_cad.tolerances._tolerance_of` forms from the stacked samples (minima and maxima
-    are exact). Returns None when a curve has degree 0, a sampled weight is not positive or a
-    sampled coordinate is not finite (the general path then raises or handles them), or when
-    ``scale`` is 0.
+    Row ``lo`` holds the per-coordinate minima, row ``lo + 1`` the maxima. Returns ``big`` raised
+    to the largest ``|x|`` of the control points ``P``, or -1.0 when a sampled weight is not > 0
+    or a sample is not finite. The samples are the bits of
+    :meth:`~relief_cad.RationalBezier.evaluate` (:func:`_rounds`, then the division by the weight,
+    as ``RationalBezier._eval``).
     """
-    H: cython.const[cython.double][:, :]
-    T: cython.const[cython.double][:]
-    P: cython.const[cython.double][:, :]
-    wk: cython.double[:, :]
-    out: cython.double[:]
     i: cython.Py_ssize_t
-    j: cython.Py_ssize_t
     c: cython.Py_ssize_t
     q: cython.Py_ssize_t
-    n: cython.Py_ssize_t
-    d: cython.Py_ssize_t
+    d: cython.Py_ssize_t = H.shape[1] - 1
     t: cython.double
     s: cython.double
     w: cython.double
     x: cython.double
-    big: cython.double = 0.0
-    scale: cython.double
-    ncurves: cython.Py_ssize_t = len(curves)
+    for i in range(P.shape[0]):
+        for c in range(P.shape[1]):
+            if abs(P[i, c]) > big:
+                big = abs(P[i, c])
+    for q in range(T.shape[0]):
+        t = T[q]
+        s = 1 - t
+        _rounds(H, t, wk)
+        w = s * wk[0, d] + t * wk[1, d]
+        if not w > 0.0:
+            return -1.0
+        for c in range(d):
+            x = (s * wk[0, c] + t * wk[1, c]) / w
+            if not (-_INF < x < _INF):
+                return -1.0
+            if x < wk[lo, c]:
+                wk[lo, c] = x
+            if x > wk[lo + 1, c]:
+                wk[lo + 1, c] = x
+    return big
+
+
+@cython.cfunc
+@cython.exceptval(check=False)
+def _rule(wk: cython.double[:, :], lo: cython.Py_ssize_t, dim: cython.Py_ssize_t, big: cython.double,
+          rel: cython.double, ulps: cython.double) -> cython.double:
+    """The default tolerance from the samples' box (rows ``lo``, ``lo + 1`` of ``wk``); -1.0 if all is 0.
+
+    :func:`relief_cad.tolerances._tolerance_at`'s rule and order of operations: the box diagonal
+    scaled by ``scale = max(big, max |sample|)``, its squares summed coordinate by coordinate,
+    ``rel * size + ulps * big``, never below the floor ``max(ulps * big, 1e-300)``.
+    """
+    c: cython.Py_ssize_t
+    dc: cython.double
+    scale: cython.double = big
+    for c in range(dim):
+        scale = max(scale, abs(wk[lo, c]), abs(wk[lo + 1, c]))
+    if scale == 0.0:
+        return -1.0
+    ss: cython.double = 0.0
+    for c in range(dim):
+        dc = (wk[lo + 1, c] - wk[lo, c]) / scale
+        ss = ss + dc * dc
+    size: cython.double = sqrt(ss) * scale
+    tol: cython.double = rel * size + ulps * big
+    floor: cython.double = max(ulps * big, 1e-300)
+    if not (-_INF < tol < _INF):
+        return floor
+    return max(tol, floor)
+
+
+@cython.cfunc
+def _curves_tolerance(curves: tuple, params: list, samples: cython.Py_ssize_t, rel: cython.double,
+                      ulps: cython.double) -> cython.double:
+    """The default tolerance of ``curves`` (see :func:`sampled_tolerance`); -1.0 for the general path."""
+    j: cython.Py_ssize_t
+    c: cython.Py_ssize_t
+    n: cython.Py_ssize_t
     dim: cython.Py_ssize_t = 0
     rows: cython.Py_ssize_t = 0
+    big: cython.double = 0.0
+    H: cython.const[cython.double][:, :]
     hs = [curve.homogeneous for curve in curves]
-    for j in range(ncurves):
-        dim = max(dim, hs[j].shape[1] - 1)
-        rows = max(rows, hs[j].shape[0])
-    wk = np.empty((rows + 2, dim + 1))  # de Casteljau rows, then the minima and the maxima
-    lo: cython.Py_ssize_t = rows
-    hi: cython.Py_ssize_t = rows + 1
+    for h in hs:
+        dim = max(dim, h.shape[1] - 1)
+        rows = max(rows, h.shape[0])
+    wk: cython.double[:, :] = np.empty((rows + 2, dim + 1))  # de Casteljau rows, the minima, the maxima
     for c in range(dim):
-        wk[lo, c] = _INF
-        wk[hi, c] = -_INF
-    for j in range(ncurves):
+        wk[rows, c] = _INF
+        wk[rows + 1, c] = -_INF
+    for j in range(len(curves)):
         H = hs[j]
         n = H.shape[0] - 1
-        d = H.shape[1] - 1
         if n < 1:
-            return None
-        P = curves[j].control_points
-        for i in range(P.shape[0]):
-            for c in range(P.shape[1]):
-                if abs(P[i, c]) > big:
-                    big = abs(P[i, c])
-        T = params[min(2 * n + 3, samples)]
-        for q in range(T.shape[0]):
-            t = T[q]
-            s = 1 - t
-            _rounds(H, t, wk)  # the rounds of _decasteljau
-            # value = s * b0 + tt * b1, then _eval: pts = value[:, :-1] / w
-            w = s * wk[0, d] + t * wk[1, d]
-            if not w > 0.0:
-                return None
-            for c in range(d):
-                x = (s * wk[0, c] + t * wk[1, c]) / w
-                if not (-_INF < x < _INF):
-                    return None
-                if x < wk[lo, c]:
-                    wk[lo, c] = x
-                if x > wk[hi, c]:
-                    wk[hi, c] = x
-        for c in range(d, dim):  # padded with zeros, as by np.hstack in _tolerance_of
-            if 0.0 < wk[lo, c]:
-                wk[lo, c] = 0.0
-            if 0.0 > wk[hi, c]:
-                wk[hi, c] = 0.0
-    scale = big
-    for c in range(dim):
-        scale = max(scale, abs(wk[lo, c]), abs(wk[hi, c]))
-    if scale == 0.0:
-        return None
-    diag = np.empty(dim)
-    out = diag
-    for c in range(dim):
-        out[c] = (wk[hi, c] - wk[lo, c]) / scale
-    return diag, float(scale), float(big)
+            return -1.0
+        big = _sample_into(H, curves[j].control_points, params[min(2 * n + 3, samples)], wk, rows, big)
+        if big < 0.0:
+            return -1.0
+        for c in range(H.shape[1] - 1, dim):  # fewer coordinates: the curve lies in x_d = 0
+            wk[rows, c] = min(wk[rows, c], 0.0)
+            wk[rows + 1, c] = max(wk[rows + 1, c], 0.0)
+    return _rule(wk, rows, dim, big, rel, ulps)
+
+
+def sampled_tolerance(curves: tuple, params: list, samples: cython.Py_ssize_t, rel: cython.double,
+                      ulps: cython.double):
+    """Default tolerance of rational curves sampled along themselves (model units), or None.
+
+    ``curves`` are :class:`~relief_cad.curves.RationalBezier` (their ``homogeneous`` rows and their
+    ``control_points`` are read); a curve of degree ``n`` is sampled at ``params[min(2 n + 3,
+    samples)]`` (``params[m]`` is ``np.linspace(0.0, 1.0, m)``), with the bits of
+    ``RationalBezier.evaluate``. With the box of all samples, ``big`` the largest ``|x|`` of the
+    control points and ``rel``, ``ulps`` the rule's factors, returns
+    :func:`relief_cad.tolerances._tolerance_at`'s value (the same operations in the same order). A
+    curve of fewer coordinates than the others counts as lying in ``x_d = 0``. None when a sampled
+    weight is not positive or a sample is not finite (the general path then raises or handles
+    them), or when every coordinate is 0.
+    """
+    tol = _curves_tolerance(curves, params, samples, rel, ulps)
+    return None if tol < 0.0 else tol
+
+
+def pair_tolerances(first: list, second: list, params: list, samples: cython.Py_ssize_t,
+                    rel: cython.double, ulps: cython.double):
+    """:func:`sampled_tolerance` of each pair ``(first[k], second[k])``: an array, NaN where it is None."""
+    k: cython.Py_ssize_t
+    t: cython.double
+    out = np.empty(len(first))
+    o: cython.double[:] = out
+    for k in range(len(first)):
+        t = _curves_tolerance((first[k], second[k]), params, samples, rel, ulps)
+        o[k] = t if t >= 0.0 else math.nan
+    return out
