@@ -613,6 +613,8 @@ def whole_overlap(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap |
     >>> whole_overlap(c, c.elevate(2), 1e-9)
     Overlap(t=(0.0, 1.0), u=(0.0, 1.0), kind='overlap')
     """
+    if not _ends_may_match(a.control_points, b.control_points, 2.0 * tol):
+        return None  # the answer for almost every pair, from eight to twelve scalar reads
     copy = _exact_copy(a, b, tol)
     if copy is not None:
         return copy
@@ -630,6 +632,22 @@ def whole_overlap(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap |
             if _coincide(a, b, 0.0, 1.0, u0, u1, tol):
                 return Overlap(t=(0.0, 1.0), u=(u0, u1))
     return None
+
+
+def _ends_may_match(pa: FloatArray, pb: FloatArray, lim: float) -> bool:
+    """True when the ends of ``pa`` are within ``lim`` of those of ``pb`` (per coordinate), either way round.
+
+    The cheap gate of :func:`whole_overlap` (called with ``lim = 2 tol``: a margin for its exact
+    rescaling of huge coordinates); curves of different dimensions never match.
+    """
+    if pa.shape[1] != pb.shape[1]:
+        return False
+    a0, a1, b0, b1 = pa[0].tolist(), pa[-1].tolist(), pb[0].tolist(), pb[-1].tolist()
+
+    def near(p: list[float], q: list[float]) -> bool:
+        return all(abs(x - y) <= lim for x, y in zip(p, q, strict=True))
+
+    return (near(a0, b0) and near(a1, b1)) or (near(a0, b1) and near(a1, b0))
 
 
 def _exact_copy(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap | None:
