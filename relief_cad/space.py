@@ -60,7 +60,7 @@ from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError
 from .relief import ReliefPerspective, central_projection
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
-from .tolerances import is_point_like, resolve_tolerance
+from .tolerances import _sampled_tolerance, is_point_like, resolve_tolerance
 
 __all__ = ["ReliefFrame", "ReliefScheme", "intersect_space", "relief_scheme"]
 
@@ -436,7 +436,7 @@ def intersect_space(
         items = refine_self(a3, items, tol_s)
     else:
         b3 = b if b.dim == 3 else b.embedded(3)
-        tol_s = resolve_tolerance(given, a3, b3)
+        tol_s = (_sampled_tolerance((a3, b3)) if given is None else None) or resolve_tolerance(given, a3, b3)
         whole = whole_overlap(a3, b3, tol_s)  # coincident curves (closed ones too) by geometry
         if whole is not None:
             return IntersectionList([whole], tol_used=tol_s)
