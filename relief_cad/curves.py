@@ -85,12 +85,14 @@ def _product_bernstein(f: FloatArray, g: FloatArray) -> FloatArray:
     q = g.shape[0] - 1
     out_shape = (p + q + 1,) + np.broadcast_shapes(f.shape[1:], g.shape[1:])
     out = np.zeros(out_shape)
+    lift = (slice(None),) + (None,) * (len(out_shape) - 1)  # a column of per-row factors
     for i in range(p + 1):
+        # term (i, j) is ((C(p, i) C(q, j)) f_i) g_j, the integer factor rounded once to a float,
+        # added to out[i + j] in order of i: one row operation per i instead of per (i, j)
         ci = math.comb(p, i)
-        for j in range(q + 1):
-            out[i + j] += ci * math.comb(q, j) * f[i] * g[j]
-    for k in range(p + q + 1):
-        out[k] /= math.comb(p + q, k)
+        factors = np.array([float(ci * math.comb(q, j)) for j in range(q + 1)])
+        out[i:i + q + 1] += (factors[lift] * f[i]) * g
+    out /= np.array([float(math.comb(p + q, k)) for k in range(p + q + 1)])[lift]
     return out
 
 

@@ -443,6 +443,8 @@ def foot_newton(
     X: cython.double[:] = np.empty(d)
     Y: cython.double[:] = np.empty(d)
     trial: cython.double[:] = np.empty(5)
+    XU: cython.double[:, :] = np.empty((m, d))  # the point of the curve at u[i], once computed
+    known: cython.uchar[:] = np.zeros(m, dtype=np.uint8)
     done: cython.bint
     still: cython.bint
     before: cython.double
@@ -459,7 +461,14 @@ def foot_newton(
         for i in range(m):
             before = dist[i]
             ui = u[i]
-            _at(H, ui, B, X)
+            if known[i]:  # the same bits as evaluating again at the same u
+                for c in range(d):
+                    X[c] = XU[i, c]
+            else:
+                _at(H, ui, B, X)
+                for c in range(d):
+                    XU[i, c] = X[c]
+                known[i] = True
             _at(HD, ui, B, Y)
             num = (X[0] - P[i, 0]) * Y[0]
             den = Y[0] * Y[0]
@@ -481,6 +490,8 @@ def foot_newton(
                 if td < dist[i]:
                     u[i] = trial[j]
                     dist[i] = td
+                    for c in range(d):
+                        XU[i, c] = X[c]
             best = dist[i] if i % group == 0 else min(best, dist[i])
             if i % group == group - 1:
                 done = done and best <= enough
