@@ -68,17 +68,18 @@ _SINGULAR = 1e-9  # |derivative| / size below which the first non-vanishing deri
 
 
 # ---------------------------------------------------------------------------- distance to a curve
-def _foot(b: RationalBezier, pts: FloatArray, enough: float = 0.0,
-          each: bool = False) -> tuple[FloatArray, FloatArray]:
+def _foot(b: RationalBezier, pts: FloatArray, enough: float = 0.0, each: bool = False,
+          dense: int = 1) -> tuple[FloatArray, FloatArray]:
     """Closest parameters on ``b`` (shape (m,)) and distances (m,) for points ``pts`` (m, d).
 
     Safeguarded Newton from the nearest of a grid; it stops once every distance is ``<= enough``:
     that of every seed, or with ``each``, that of the best seed of each point. ``each`` is for
     callers that only test the distances against a bound ``>= enough`` (the answer is the same:
     the iteration only ever lowers a distance), where the other seeds, on other branches, never
-    get that close and kept the loop running to its step limit (5 ms at degree 8).
+    get that close and kept the loop running to its step limit (5 ms at degree 8). ``dense``
+    multiplies the number of grid points (for a second look where the first grid was too coarse).
     """
-    n = max(8, _SAMPLES_PER_DEGREE * 4 * (b.degree + 1))
+    n = max(8, _SAMPLES_PER_DEGREE * 4 * (b.degree + 1)) * dense
     grid = np.linspace(0.0, 1.0, n + 1)
     vals = b.evaluate(grid)
     d2 = ((pts[:, None, :] - vals[None, :, :]) ** 2).sum(axis=2)
@@ -150,7 +151,11 @@ def _coincide(a: RationalBezier, b: RationalBezier, t0: float, t1: float, u0: fl
     s = (np.arange(1, m + 1) - 0.5) / m
     for src, dst in ((pa, pb), (pb, pa)):
         pts = src.evaluate(s)
-        if not np.all(_foot(dst, pts, 0.25 * tol, each=True)[1] <= tol):
+        far = _foot(dst, pts, 0.25 * tol, each=True)[1] > tol
+        # a second look, on a grid 8 times finer, at the points that seemed far: on a small loop
+        # the true foot can lie between two grid points that are both farther than a false local
+        # minimum next to them (a rational loop against its own reverse came out as four contacts)
+        if far.any() and not np.all(_foot(dst, pts[far], 0.25 * tol, each=True, dense=8)[1] <= tol):
             return False
     span = float(np.ptp(pa.evaluate(np.linspace(0.0, 1.0, m)), axis=0).max())
     return span > 4.0 * tol

@@ -579,7 +579,7 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
         pts.flags.writeable = False
         wts.flags.writeable = False
         idx = np.arange(2 * len(planar), dtype=np.int64).reshape(-1, 2)
-        tols = (_default_tolerances([plist[k][0] for k in planar], [plist[k][1] for k in planar])
+        tols = (_default_tolerances([c for k in planar for c in plist[k]], pts, offsets, idx)
                 if ftol is None else np.array([resolve_tolerance(ftol, *plist[k]) for k in planar]))
         res = _batch_rows(pts, wts, offsets, idx, tols, nbudget, nworkers)
         out_items: list[list[Result]] = [[] for _ in planar]

@@ -29,6 +29,7 @@ from collections.abc import Iterable
 from typing import TYPE_CHECKING, Union, cast
 
 import numpy as np
+from numpy.typing import NDArray
 
 from ._kernels.bezier import pair_tolerances, sampled_tolerance
 from ._types import FloatArray
@@ -161,17 +162,34 @@ def _sampled_tolerance(curves: tuple[RationalBezier, ...]) -> float | None:
     return tol
 
 
-def _default_tolerances(first: list[RationalBezier], second: list[RationalBezier]) -> FloatArray:
-    """:func:`default_tolerance` of each pair ``(first[k], second[k])`` of curves, in one compiled call.
+def _default_tolerances(curves: list[RationalBezier], P: FloatArray, offsets: NDArray[np.int64],
+                        pairs: NDArray[np.int64]) -> FloatArray:
+    """:func:`default_tolerance` of each pair of planar ``curves`` (``pairs``: (p, 2) indexes), at once.
 
-    The same values as :func:`_sampled_tolerance` pair by pair (the batch's hot path: no Python per
+    ``P`` and ``offsets`` are the curves' control points packed as the batch kernel takes them. The
+    same values as :func:`_sampled_tolerance` pair by pair (the batch's hot path: no Python per
     pair); a pair with a degenerate sample gets the general path.
     """
-    tols: FloatArray = pair_tolerances(first, second, _params(), _SAMPLES, RELATIVE_TOLERANCE,
+    H = np.concatenate([c.homogeneous for c in curves])
+    tols: FloatArray = pair_tolerances(H, P, offsets, pairs, _table(), _SAMPLES, RELATIVE_TOLERANCE,
                                        ROUNDING_ULPS * _EPS)
     for k in np.flatnonzero(np.isnan(tols)).tolist():
-        tols[k] = default_tolerance(first[k], second[k])
+        tols[k] = default_tolerance(curves[int(pairs[k, 0])], curves[int(pairs[k, 1])])
     return tols
+
+
+def _table() -> FloatArray:
+    """``_table()[m, :m]`` is ``_params()[m]``: the sampled parameters as one array (made once)."""
+    if not _TABLE:
+        table = np.zeros((_SAMPLES + 1, _SAMPLES + 1))
+        for m, t in enumerate(_params()):
+            table[m, :m] = t
+        table.flags.writeable = False
+        _TABLE[:] = [table]
+    return _TABLE[0]
+
+
+_TABLE: list[FloatArray] = []
 
 
 def _tolerance_of(extents: list[FloatArray], coords: list[FloatArray]) -> float:

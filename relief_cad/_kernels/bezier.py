@@ -448,14 +448,52 @@ def sampled_tolerance(curves: tuple, params: list, samples: cython.Py_ssize_t, r
     return None if tol < 0.0 else tol
 
 
-def pair_tolerances(first: list, second: list, params: list, samples: cython.Py_ssize_t,
-                    rel: cython.double, ulps: cython.double):
-    """:func:`sampled_tolerance` of each pair ``(first[k], second[k])``: an array, NaN where it is None."""
+def pair_tolerances(
+    H: cython.const[cython.double][:, :],
+    P: cython.const[cython.double][:, :],
+    offsets: cython.const[cython.longlong][:],
+    pairs: cython.const[cython.longlong][:, :],
+    table: cython.const[cython.double][:, :],
+    samples: cython.Py_ssize_t,
+    rel: cython.double,
+    ulps: cython.double,
+):
+    """:func:`sampled_tolerance` of every pair of packed curves of one dimension: an array, NaN where None.
+
+    Curve ``k`` has the homogeneous rows ``H[offsets[k]:offsets[k + 1]]`` and the control points
+    ``P[offsets[k]:offsets[k + 1]]``; ``pairs`` (p, 2) indexes curves; ``table[m, :m]`` is
+    ``np.linspace(0.0, 1.0, m)``. No Python per pair (the batch's hot path).
+    """
     k: cython.Py_ssize_t
-    t: cython.double
-    out = np.empty(len(first))
+    j: cython.Py_ssize_t
+    c: cython.Py_ssize_t
+    n: cython.Py_ssize_t
+    m: cython.Py_ssize_t
+    lo: cython.Py_ssize_t
+    hi: cython.Py_ssize_t
+    rows: cython.Py_ssize_t = 0
+    dim: cython.Py_ssize_t = H.shape[1] - 1
+    big: cython.double
+    for k in range(offsets.shape[0] - 1):
+        rows = max(rows, offsets[k + 1] - offsets[k])
+    out = np.empty(pairs.shape[0])
     o: cython.double[:] = out
-    for k in range(len(first)):
-        t = _curves_tolerance((first[k], second[k]), params, samples, rel, ulps)
-        o[k] = t if t >= 0.0 else math.nan
+    wk: cython.double[:, :] = np.empty((rows + 2, dim + 1))
+    for k in range(pairs.shape[0]):
+        for c in range(dim):
+            wk[rows, c] = _INF
+            wk[rows + 1, c] = -_INF
+        big = 0.0
+        for j in range(2):
+            lo = offsets[pairs[k, j]]
+            hi = offsets[pairs[k, j] + 1]
+            n = hi - lo - 1
+            m = min(2 * n + 3, samples)
+            if n < 1 or big < 0.0:
+                big = -1.0
+                break
+            big = _sample_into(H[lo:hi], P[lo:hi], table[m, :m], wk, rows, big)
+        o[k] = math.nan if big < 0.0 else _rule(wk, rows, dim, big, rel, ulps)
+        if o[k] < 0.0:
+            o[k] = math.nan
     return out

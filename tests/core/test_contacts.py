@@ -182,3 +182,29 @@ def test_foot_is_the_closest_point_of_the_curve() -> None:
         assert np.all((u >= 0.0) & (u <= 1.0))
         assert np.allclose(np.linalg.norm(curve.evaluate(u) - pts, axis=1), dist, rtol=0, atol=1e-15)
         assert np.all(dist <= best * (1 + 1e-6) + 1e-12), (k, dist - best)
+
+
+def test_a_rational_loop_against_its_reverse_is_one_overlap_in_a_batch() -> None:
+    """A rational quartic with a small loop (double point at t = 0.107 / 0.322) against its reverse.
+
+    ``intersect`` answers it before clipping (whole_overlap); ``intersect_many`` sends it to the
+    batch kernel (the reversed copy's control points differ by a rounding), whose post-pass found
+    four contacts: a sample on the loop had its closest point between two grid points of the other
+    curve, both farther than a false local minimum next to them. The coincidence test now takes a
+    second look on a finer grid. Also at the scale 2**498 (the range-scaled path).
+    """
+    rows = [["0x1.9c4b40857003ap-2", "0x1.173a217f4f81ep-2"], ["0x1.87ad5557c561cp-6", "0x1.2ba4f6d3a7a2fp-4"],
+            ["0x1.357aa7d8dae06p-1", "0x1.24cbe9e157589p-2"], ["0x1.9d274a05c0997p-2", "0x1.583be67662eeap-1"],
+            ["0x1.9fe779cac709fp-2", "0x1.6013b151deb12p-3"]]
+    w = ["0x1.9a2f809584dd8p-1", "0x1.747029f97c71dp+0", "0x1.d2c3c33b69a8ap-1", "0x1.2a7597573af18p-1",
+         "0x1.393936725c924p-1"]
+    pts = np.array([[float.fromhex(x) for x in r] for r in rows])
+    weights = np.array([float.fromhex(x) for x in w])
+    for exp in (0, 498):
+        loop = RationalBezier(np.ldexp(pts, exp), weights)
+        back = loop.reversed()
+        assert not np.array_equal(back.control_points[::-1], loop.control_points)  # a rounding apart
+        whole = [Overlap(t=(0.0, 1.0), u=(1.0, 0.0))]
+        assert list(intersect(loop, back)) == whole
+        assert [list(r) for r in intersect_many([(loop, back), (back, loop)])] == [whole, whole]
+        assert [(round(r.t, 9), round(r.u, 9)) for r in intersect(loop)] == [(0.107127077, 0.321738207)]
