@@ -65,7 +65,7 @@ SANITIZED_TESTS = [
     "tests/functional/test_contact_corpus.py", "tests/functional/test_planar_corpus.py",
 ]
 # what those tests import (pyproject's test extra without the workbench and CAD parts), and the build
-SANITIZED_DEPS = ["numpy>=1.26", "cython>=3.1", "setuptools>=68", "pytest>=8", "pytest-timeout>=2.2",
+SANITIZED_DEPS = ["numpy>=1.26", "cython>=3.1", "setuptools>=77", "pytest>=8", "pytest-timeout>=2.2",
                   "hypothesis>=6.100", "mpmath>=1.3"]
 
 
