@@ -229,7 +229,7 @@ def test_build123d_forms_inside_build_sketch():
     faces = rbd.arrange([rect, circle], faces=True)
     assert isinstance(faces, bd.ShapeList) and all(isinstance(f, bd.Face) for f in faces)
     with bd.BuildSketch() as sketch:
-        bd.add(faces)  # add(): build123d 0.12; 0.13 calls it insert() and keeps add() deprecated
+        getattr(bd, "insert", bd.add)(faces)  # insert(): build123d 0.13 (add() deprecated); add(): 0.12
     assert math.isclose(sketch.sketch.area, (rect + circle).area, rel_tol=1e-9)
     edges = rbd.arrange([rect, circle])
     assert isinstance(edges, bd.ShapeList) and all(isinstance(e, bd.Edge) for e in edges)
