@@ -172,22 +172,21 @@ def _end_nodes(a: RationalBezier, b: RationalBezier, tol: float) -> set[tuple[fl
     out: set[tuple[float, float]] = set()
     ends_b = (b.control_points[0], b.control_points[-1])
     for t, pt in ((0.0, a.control_points[0]), (1.0, a.control_points[-1])):
-        found = [u for u, q in zip((0.0, 1.0), ends_b, strict=True) if np.array_equal(pt, q)]
-        if not found:
-            if _surely_far(b, pt[None, :], tol):
-                continue
-            fu, fd = _foot(b, pt[None, :], 0.25 * tol)
-            found = [float(fu[0])] if fd[0] <= tol else []
-        out.update((t, u) for u in found + _other_feet(b, pt, tol, found))
+        exact = [u for u, q in zip((0.0, 1.0), ends_b, strict=True) if np.array_equal(pt, q)]
+        out.update((t, u) for u in _passages(b, pt, tol, exact))
     for u, pt in ((0.0, ends_b[0]), (1.0, ends_b[1])):
-        found = [q[0] for q in out if q[1] == u]
-        if not found:
-            if _surely_far(a, pt[None, :], tol):
-                continue
-            ft, fd = _foot(a, pt[None, :], 0.25 * tol)
-            found = [float(ft[0])] if fd[0] <= tol else []
-        out.update((t, u) for t in found + _other_feet(a, pt, tol, found))
+        out.update((t, u) for t in _passages(a, pt, tol, [q[0] for q in out if q[1] == u]))
     return out
+
+
+def _passages(c: RationalBezier, pt: FloatArray, tol: float, found: list[float]) -> list[float]:
+    """Parameters where ``c`` passes within ``tol`` of ``pt``: ``found``, else the foot; then the rest."""
+    if not found:
+        if _surely_far(c, pt[None, :], tol):
+            return []
+        fu, fd = _foot(c, pt[None, :], 0.25 * tol)
+        found = [float(fu[0])] if fd[0] <= tol else []
+    return found + _other_feet(c, pt, tol, found)
 
 
 def _other_feet(b: RationalBezier, pt: FloatArray, tol: float, known: list[float]) -> list[float]:
