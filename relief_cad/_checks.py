@@ -267,7 +267,7 @@ def check_finite(arr: FloatArray, name: str) -> None:
     ...
     relief_cad.errors.NonFiniteError: t should be finite numbers; entry (1,) is inf
     """
-    if not np.all(np.isfinite(arr)):
+    if not np.isfinite(arr).all():
         if arr.ndim == 0:
             raise NonFiniteError(f"{name} should be a finite number, not {float(arr)!r}")
         bad = tuple(int(i) for i in np.argwhere(~np.isfinite(arr))[0])

@@ -297,14 +297,18 @@ def self_overlaps(pieces: Sequence[tuple[Overlap, bool]]) -> list[Overlap]:
 def _fold(c: RationalBezier, t: float, u: float) -> float | None:
     """The fold parameter between ``t`` and ``u`` where ``c`` turns back (derivative reverses)."""
     ref = c.derivative(t)
+
+    def along(x: float) -> float:  # c'(x) . c'(t); a 1-D float array takes derivative's fast path
+        return float(c.derivative(np.array([x]))[0] @ ref)
+
     lo, hi = t, u
-    if float(c.derivative(hi) @ ref) >= 0.0:
+    if along(hi) >= 0.0:
         return None
     for _ in range(200):
         mid = 0.5 * (lo + hi)
         if mid in (lo, hi):
             break
-        lo, hi = (mid, hi) if float(c.derivative(mid) @ ref) > 0.0 else (lo, mid)
+        lo, hi = (mid, hi) if along(mid) > 0.0 else (lo, mid)
     return 0.5 * (lo + hi)
 
 

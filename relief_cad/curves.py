@@ -144,12 +144,13 @@ class RationalBezier:
     relief_cad.errors.DegreeError: A curve needs at least 2 control points (degree >= 1), not 1.
     """
 
-    __slots__ = ("_h", "_points", "_weights", "_polynomial")
+    __slots__ = ("_h", "_points", "_weights", "_polynomial", "_hodo")
 
     _h: FloatArray
     _points: FloatArray | None
     _weights: FloatArray | None
     _polynomial: bool | None
+    _hodo: RationalBezier | None  # the hodograph, built on first use (the curve is immutable)
 
     def __init__(self, control_points: PointsLike, weights: ParamsLike | None = None) -> None:
         pts = as_real_array(control_points, "control_points")
@@ -187,6 +188,7 @@ class RationalBezier:
         self._points = pts
         self._weights = w
         self._polynomial = None
+        self._hodo = None
         for arr in (pts, w):
             if arr is not None:
                 arr.flags.writeable = False
@@ -374,7 +376,10 @@ class RationalBezier:
         return deriv
 
     def _eval(self, t: ParamsLike, derivative: bool) -> tuple[FloatArray, FloatArray]:
-        tt = as_real_array(t, "t")
+        if type(t) is np.ndarray and t.dtype == np.float64 and t.ndim == 1:
+            tt = t  # the internal callers' form, taken as it is (read only, never kept)
+        else:
+            tt = as_real_array(t, "t")
         scalar = tt.ndim == 0
         if tt.ndim > 1:
             raise ShapeError(f"t should be a scalar or a 1-D array, not shape {tt.shape}")
@@ -382,7 +387,7 @@ class RationalBezier:
         tv = tt.reshape(-1)
         value, dvalue = _decasteljau(self._h, tv)
         w = value[:, -1:]
-        if not np.all(w > 0.0):
+        if not (w > 0.0).all():
             i = int(np.argmin(w[:, 0] > 0.0))
             raise ProjectionError(
                 f"the curve's weight should be > 0 where it is evaluated; at t={tv[i]!r} it is "
@@ -414,6 +419,11 @@ class RationalBezier:
         >>> bool(np.allclose(c.hodograph()(0.3), c.derivative(0.3)))
         True
         """
+        if self._hodo is None:
+            self._hodo = self._make_hodograph()
+        return self._hodo
+
+    def _make_hodograph(self) -> RationalBezier:
         n = self.degree
         h = self._h
         if self.is_polynomial:
