@@ -22,13 +22,14 @@ True
 
 from __future__ import annotations
 
+import functools
 import math
 from typing import overload
 
 import numpy as np
 
 from ._checks import as_real_array, check_count, check_degree, check_finite, check_param, check_weights
-from ._kernels.bezier import decasteljau_rows
+from ._kernels.bezier import bernstein_product, decasteljau_rows
 from ._types import FloatArray, ParamsLike, PointsLike
 from .errors import (
     DegenerateCurveError,
@@ -80,20 +81,29 @@ def _blossom_rows(h: FloatArray, params: FloatArray) -> FloatArray:
 
 
 def _product_bernstein(f: FloatArray, g: FloatArray) -> FloatArray:
-    """Bernstein coefficients of the product of two Bernstein polynomials (rows are coefficients)."""
-    p = f.shape[0] - 1
-    q = g.shape[0] - 1
-    out_shape = (p + q + 1,) + np.broadcast_shapes(f.shape[1:], g.shape[1:])
-    out = np.zeros(out_shape)
-    lift = (slice(None),) + (None,) * (len(out_shape) - 1)  # a column of per-row factors
-    for i in range(p + 1):
-        # term (i, j) is ((C(p, i) C(q, j)) f_i) g_j, the integer factor rounded once to a float,
-        # added to out[i + j] in order of i: one row operation per i instead of per (i, j)
-        ci = math.comb(p, i)
-        factors = np.array([float(ci * math.comb(q, j)) for j in range(q + 1)])
-        out[i:i + q + 1] += (factors[lift] * f[i]) * g
-    out /= np.array([float(math.comb(p + q, k)) for k in range(p + q + 1)])[lift]
-    return out
+    """Bernstein coefficients of the product of two Bernstein polynomials (rows are coefficients).
+
+    ``f`` (p + 1,) or (p + 1, kf), ``g`` (q + 1,) or (q + 1, kg), with ``kf``, ``kg`` equal or 1.
+    Term ``(i, j)`` is ``((C(p, i) C(q, j)) f_i) g_j``, the integer factor rounded once to a float,
+    added to row ``i + j`` in order of ``i``; then row ``r`` is divided by ``C(p + q, r)``. Compiled
+    (:func:`relief_cad._kernels.bezier.bernstein_product`).
+
+    >>> _product_bernstein(np.array([1.0, 2.0]), np.array([3.0, 1.0])).tolist()   # (1 + t)(3 - 2t)
+    [3.0, 3.5, 2.0]
+    """
+    fac, den = _product_factors(f.shape[0] - 1, g.shape[0] - 1)
+    out: FloatArray = bernstein_product(f.reshape(f.shape[0], -1), g.reshape(g.shape[0], -1), fac, den)
+    return out if f.ndim > 1 or g.ndim > 1 else out[:, 0]
+
+
+@functools.cache
+def _product_factors(p: int, q: int) -> tuple[FloatArray, FloatArray]:
+    """``C(p, i) C(q, j)`` (p + 1, q + 1) and ``C(p + q, r)`` (p + q + 1,), each rounded once to a float."""
+    fac = np.array([[float(math.comb(p, i) * math.comb(q, j)) for j in range(q + 1)] for i in range(p + 1)])
+    den = np.array([float(math.comb(p + q, r)) for r in range(p + q + 1)])
+    fac.flags.writeable = False
+    den.flags.writeable = False
+    return fac, den
 
 
 def _elevate_rows(h: FloatArray, times: int) -> FloatArray:
