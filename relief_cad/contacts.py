@@ -33,14 +33,16 @@ only (so it is never hot), what they are:
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Sequence
 from fractions import Fraction
 from typing import Literal
 
 import numpy as np
+from numpy.polynomial import polynomial as P
 
-from ._kernels.polish import foot_newton
+from ._kernels.polish import foot_newton, foot_seeds, surely_far
 from ._types import FloatArray
 from .curves import RationalBezier, _decasteljau
 from .results import Intersection, Overlap, Result
@@ -80,29 +82,21 @@ def _foot(b: RationalBezier, pts: FloatArray, enough: float = 0.0, each: bool = 
     multiplies the number of grid points (for a second look where the first grid was too coarse).
     """
     n = max(8, _SAMPLES_PER_DEGREE * 4 * (b.degree + 1)) * dense
-    grid = np.linspace(0.0, 1.0, n + 1)
-    vals = b.evaluate(grid)
-    d2 = ((pts[:, None, :] - vals[None, :, :]) ** 2).sum(axis=2)
     # Newton from the three nearest local minima of the grid distance, keeping the best: near a
     # double point, or on a thin loop whose branches pass closer than the grid spacing, the nearest
     # grid points may all lie on the other branch, while each branch has a local minimum of its own
-    left = np.concatenate([np.full((d2.shape[0], 1), np.inf), d2[:, :-1]], axis=1)
-    right = np.concatenate([d2[:, 1:], np.full((d2.shape[0], 1), np.inf)], axis=1)
-    seeds = np.argsort(np.where((d2 <= left) & (d2 <= right), d2, np.inf), axis=1, kind="stable")[:, :3]
+    # (compiled: the grid, its distances and the seeds in one call, the bits of the numpy form)
+    k = 3
     m = pts.shape[0]
-    pts = np.repeat(pts, seeds.shape[1], axis=0)
-    u = grid[seeds.ravel()]
-    d2 = d2[np.repeat(np.arange(m), seeds.shape[1]), seeds.ravel()][:, None]
-    dist = np.sqrt(d2.min(axis=1))
+    grid = np.linspace(0.0, 1.0, n + 1)
+    u, dist = foot_seeds(b.homogeneous, grid, np.ascontiguousarray(pts, dtype=np.float64), k)
     # the safeguarded Newton loop, compiled (the same operations and order as the numpy form it
     # replaced: the same bits): from the same u, the Newton step, damped (halved, quartered: next
     # to a double point the full step lands on the other branch and is refused), and two shrinking
     # probes that leave stationary points (a fold tip); a trial is kept only where it brings b
     # closer; stop once every distance is <= enough, or when three steps in a row gain nothing
     # (every point at its local minimum)
-    u = np.array(u, dtype=np.float64)
-    _newton(b, pts, u, dist, enough, n, seeds.shape[1] if each else 1)
-    k = seeds.shape[1]
+    _newton(b, np.repeat(pts, k, axis=0), u, dist, enough, n, k if each else 1)
     best = np.argmin(dist.reshape(m, k), axis=1)
     return u.reshape(m, k)[np.arange(m), best], dist.reshape(m, k)[np.arange(m), best]
 
@@ -125,12 +119,11 @@ def _surely_far(b: RationalBezier, pts: FloatArray, tol: float) -> bool:
     """True when some point of ``pts`` (m, d) is certainly farther than ``tol`` from ``b``.
 
     Grid test only (no Newton): a point of ``b`` lies within one grid chord of a grid point, so
-    a grid distance above ``tol`` plus the longest chord is a certain miss.
+    a grid distance above ``tol`` plus the longest chord is a certain miss. Compiled
+    (:func:`relief_cad._kernels.polish.surely_far`).
     """
-    grid = b.evaluate(np.linspace(0.0, 1.0, 8 * (b.degree + 1) + 1))
-    chord = float(np.sqrt((np.diff(grid, axis=0) ** 2).sum(axis=1)).max())
-    d2 = ((pts[:, None, :] - grid[None, :, :]) ** 2).sum(axis=2).min(axis=1)
-    return bool(np.any(np.sqrt(d2) > tol + chord))
+    grid = np.linspace(0.0, 1.0, 8 * (b.degree + 1) + 1)
+    return bool(surely_far(b.homogeneous, grid, np.ascontiguousarray(pts, dtype=np.float64), tol))
 
 
 def _piece(c: RationalBezier, s0: float, s1: float) -> RationalBezier:
@@ -557,8 +550,8 @@ def _tangency(a: RationalBezier, b: RationalBezier, ts: FloatArray) -> tuple[Flo
     return h, u
 
 
-def _contact_root(fit: np.polynomial.Polynomial) -> float | None:
-    """The root near 0 of the lowest derivative of ``fit`` that has a simple root there.
+def _contact_root(coef: FloatArray) -> float | None:
+    """The root near 0 of the lowest derivative of the power series ``coef`` that has a simple root there.
 
     A contact of order ``m`` makes the tangency function vanish to order ``m - 1``; its
     ``(m - 2)``-th derivative has a simple root there, well conditioned even where the function
@@ -566,14 +559,37 @@ def _contact_root(fit: np.polynomial.Polynomial) -> float | None:
     """
     grid = np.linspace(-1.0, 1.0, 41)
     for j in range(4):
-        q = fit.deriv(j) if j else fit
-        dq = q.deriv()
-        scale = float(np.abs(dq(grid)).max())
-        roots = [float(r.real) for r in q.roots() if abs(r.imag) < 1e-9 and abs(r.real) < 0.05]
+        q = P.polyder(coef, j) if j else coef
+        dq = P.polyder(q)
+        scale = float(np.abs(P.polyval(grid, dq)).max())
+        roots = [float(r.real) for r in P.polyroots(q) if abs(r.imag) < 1e-9 and abs(r.real) < 0.05]
         roots.sort(key=abs)
-        if roots and scale > 0.0 and abs(float(dq(roots[0]))) >= 1e-3 * scale:
+        if roots and scale > 0.0 and abs(float(P.polyval(roots[0], dq))) >= 1e-3 * scale:
             return roots[0]
     return None
+
+
+@functools.cache
+def _design(s: tuple[float, ...], deg: int) -> tuple[FloatArray, FloatArray, float]:
+    """Least-squares set-up of :func:`_fit` on the nodes ``s`` (made once).
+
+    The Vandermonde matrix with its columns scaled to unit norm, the column norms and ``rcond``.
+    """
+    van = P.polyvander(np.array(s), deg)
+    scl = np.sqrt(np.square(van.T).sum(1))
+    scl[scl == 0] = 1
+    return van / scl, scl, len(s) * float(np.finfo(np.float64).eps)
+
+
+def _fit(s: FloatArray, h: FloatArray, deg: int) -> FloatArray:
+    """Power-series coefficients (deg + 1,) of the least-squares fit of ``h`` at the nodes ``s``.
+
+    The computation of ``np.polynomial.Polynomial.fit(s, h, deg, domain=[-1, 1]).coef`` (the
+    same bits), with its Vandermonde matrix made once for the fixed nodes.
+    """
+    a, scl, rcond = _design(tuple(s.tolist()), deg)
+    coef: FloatArray = np.linalg.lstsq(a, h, rcond)[0] / scl
+    return coef
 
 
 def _locate(a: RationalBezier, b: RationalBezier, p: Intersection, tol: float) -> Intersection:
@@ -588,7 +604,7 @@ def _locate(a: RationalBezier, b: RationalBezier, p: Intersection, tol: float) -
         return p
     s = np.cos(np.pi * (np.arange(21) + 0.5) / 21)
     h, _ = _tangency(a, b, p.t + w * s)
-    root = _contact_root(np.polynomial.Polynomial.fit(s, h, 10, domain=[-1.0, 1.0]))
+    root = _contact_root(_fit(s, h, 10))
     if root is None:
         return p
     t = p.t + w * root

@@ -503,3 +503,125 @@ def foot_newton(
         if stalled >= 3:
             break
     return True
+
+
+def foot_seeds(
+    H: cython.const[cython.double][:, :],
+    grid: cython.const[cython.double][:],
+    P: cython.const[cython.double][:, :],
+    k: cython.Py_ssize_t,
+):
+    """Seeds of :func:`relief_cad.contacts._foot`: for each point, the ``k`` nearest local minima.
+
+    ``H`` is the curve (homogeneous rows, weights last), ``grid`` (g,) its sampled parameters with
+    ``g >= k``, ``P`` (m, d) the points. The squared grid distances are those of the numpy form
+    (``((P[:, None] - X[None]) ** 2).sum(axis=2)``, ``X`` the curve at the grid, evaluated with the
+    bits of :meth:`~relief_cad.RationalBezier.evaluate`); a grid point is a local minimum when its
+    distance is ``<=`` both neighbours' (none past the ends). The seeds of a point are its ``k``
+    smallest minima, then, if there are fewer, its first non-minima in grid order: the order of a
+    stable ``argsort`` that counts non-minima as infinite. Returns ``u`` (m k,), the seeds'
+    parameters, and ``dist`` (m k,), their distances, the seeds of one point consecutive.
+    """
+    i: cython.Py_ssize_t
+    g: cython.Py_ssize_t
+    c: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    ng: cython.Py_ssize_t = grid.shape[0]
+    m: cython.Py_ssize_t = P.shape[0]
+    d: cython.Py_ssize_t = P.shape[1]
+    B: cython.double[:, :] = np.empty((H.shape[0], H.shape[1]))
+    X: cython.double[:, :] = np.empty((ng, d))
+    D: cython.double[:] = np.empty(ng)
+    key: cython.double[:] = np.empty(ng)
+    pick: cython.Py_ssize_t[:] = np.empty(k, dtype=np.intp)
+    u_out = np.empty(m * k)
+    d_out = np.empty(m * k)
+    uo: cython.double[:] = u_out
+    do: cython.double[:] = d_out
+    acc: cython.double
+    lo: cython.double
+    hi: cython.double
+    for g in range(ng):
+        _at(H, grid[g], B, X[g])
+    for i in range(m):
+        for g in range(ng):
+            acc = (P[i, 0] - X[g, 0]) * (P[i, 0] - X[g, 0])
+            for c in range(1, d):
+                acc = acc + (P[i, c] - X[g, c]) * (P[i, c] - X[g, c])
+            D[g] = acc
+        for g in range(ng):  # no neighbour past an end: an infinite one (NaN is no minimum)
+            lo = D[g - 1] if g > 0 else _INF
+            hi = D[g + 1] if g < ng - 1 else _INF
+            key[g] = D[g] if D[g] <= lo and D[g] <= hi else _INF
+        _smallest(key, k, pick)
+        for j in range(k):
+            uo[i * k + j] = grid[pick[j]]
+            do[i * k + j] = sqrt(D[pick[j]])
+    return u_out, d_out
+
+
+@cython.cfunc
+@cython.exceptval(check=False)
+def _smallest(key: cython.double[:], k: cython.Py_ssize_t, pick: cython.Py_ssize_t[:]) -> cython.void:
+    """Indexes of the ``k`` smallest ``key`` (no NaN) into ``pick``, ties by index.
+
+    The first ``k`` of a stable ``argsort``.
+    """
+    g: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    n: cython.Py_ssize_t = 0
+    for g in range(key.shape[0]):
+        if n == k and not key[g] < key[pick[k - 1]]:
+            continue
+        j = n if n < k else k - 1  # full: the last pick drops out; insert after every key <= key[g]
+        while j > 0 and key[g] < key[pick[j - 1]]:
+            pick[j] = pick[j - 1]
+            j -= 1
+        pick[j] = g
+        if n < k:
+            n += 1
+
+
+def surely_far(
+    H: cython.const[cython.double][:, :],
+    grid: cython.const[cython.double][:],
+    P: cython.const[cython.double][:, :],
+    tol: cython.double,
+) -> cython.bint:
+    """True when some point of ``P`` (m, d) is certainly farther than ``tol`` from the curve ``H``.
+
+    The test of :func:`relief_cad.contacts._surely_far` with its numpy form's bits: the curve at
+    ``grid`` (g,) (the bits of :meth:`~relief_cad.RationalBezier.evaluate`), the longest chord
+    between consecutive grid points, and for each point its nearest grid distance; far when that
+    distance exceeds ``tol`` plus the longest chord.
+    """
+    g: cython.Py_ssize_t
+    i: cython.Py_ssize_t
+    c: cython.Py_ssize_t
+    ng: cython.Py_ssize_t = grid.shape[0]
+    d: cython.Py_ssize_t = P.shape[1]
+    B: cython.double[:, :] = np.empty((H.shape[0], H.shape[1]))
+    X: cython.double[:, :] = np.empty((ng, d))
+    acc: cython.double
+    near: cython.double
+    chord: cython.double = -_INF
+    for g in range(ng):
+        _at(H, grid[g], B, X[g])
+    for g in range(ng - 1):  # np.max propagates NaN
+        acc = (X[g + 1, 0] - X[g, 0]) * (X[g + 1, 0] - X[g, 0])
+        for c in range(1, d):
+            acc = acc + (X[g + 1, c] - X[g, c]) * (X[g + 1, c] - X[g, c])
+        acc = sqrt(acc)
+        if acc > chord or acc != acc or chord != chord:
+            chord = acc if chord == chord else chord
+    for i in range(P.shape[0]):
+        near = _INF
+        for g in range(ng):  # np.min propagates NaN
+            acc = (P[i, 0] - X[g, 0]) * (P[i, 0] - X[g, 0])
+            for c in range(1, d):
+                acc = acc + (P[i, c] - X[g, c]) * (P[i, c] - X[g, c])
+            if acc < near or acc != acc or near != near:
+                near = acc if near == near else near
+        if sqrt(near) > tol + chord:
+            return True
+    return False
