@@ -269,6 +269,28 @@ def test_self_intersection_of_a_space_loop() -> None:
     np.testing.assert_allclose(a(r.t), a(r.u), atol=1e-12)
 
 
+@pytest.mark.parametrize("tip", [[1.0, 1.0, 1.0], [3.0, -2.0, 0.5]])
+@pytest.mark.parametrize("scale", [1.0, 2.0**-40, 2.0**60])
+def test_a_space_curve_running_out_and_back_is_one_self_overlap(tip: list[float], scale: float) -> None:
+    # the derivative vanishes at the tip, so every piece that ends there has a repeated control
+    # point: such a piece is still monotone along its chord (it used to be halved twelve times, and
+    # the pieces' pairs made this 12 ms); the answer is the stretch out against the stretch back
+    p = np.array([[0.0, 0.0, 0.0], tip, tip, [0.0, 0.0, 0.0]]) * scale
+    res = intersect_space(RationalBezier(p))
+    assert res.complete
+    assert list(res) == [Overlap(t=(0.0, 0.5), u=(1.0, 0.5))]
+
+
+def test_monotone_pieces_allow_repeated_control_points_but_not_a_turn() -> None:
+    from relief_cad.space import _monotone
+
+    leg = np.array([1.0, 2.0, 0.5])
+    assert _monotone(np.array([0 * leg, leg, 2 * leg, 2 * leg]))   # ends at a zero derivative
+    assert _monotone(np.array([0 * leg, 0 * leg, leg, 3 * leg]))   # starts at one
+    assert not _monotone(np.array([0 * leg, 2 * leg, leg, 3 * leg]))   # a leg runs back
+    assert not _monotone(np.array([0 * leg, leg, leg, 0 * leg]))   # closed: no chord to advance on
+
+
 def test_bad_input() -> None:
     a = RationalBezier([[0, 0, 0], [1, 1, 1]])
     with pytest.raises(ToleranceError):
