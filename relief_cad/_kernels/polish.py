@@ -505,6 +505,30 @@ def foot_newton(
     return True
 
 
+@cython.cfunc
+def _grid_points(H: cython.const[cython.double][:, :], grid: cython.const[cython.double][:],
+                 d: cython.Py_ssize_t):
+    """The curve ``H`` at ``grid`` (g,): (g, d), the bits of :meth:`~relief_cad.RationalBezier.evaluate`."""
+    g: cython.Py_ssize_t
+    B: cython.double[:, :] = np.empty((H.shape[0], H.shape[1]))
+    X: cython.double[:, :] = np.empty((grid.shape[0], d))
+    for g in range(grid.shape[0]):
+        _at(H, grid[g], B, X[g])
+    return X
+
+
+@cython.cfunc
+@cython.exceptval(check=False)
+def _sq(P: cython.const[cython.double][:, :], i: cython.Py_ssize_t, X: cython.double[:, :],
+        g: cython.Py_ssize_t) -> cython.double:
+    """``((P[i] - X[g]) ** 2).sum()`` in numpy's order (coordinate by coordinate)."""
+    c: cython.Py_ssize_t
+    acc: cython.double = (P[i, 0] - X[g, 0]) * (P[i, 0] - X[g, 0])
+    for c in range(1, P.shape[1]):
+        acc = acc + (P[i, c] - X[g, c]) * (P[i, c] - X[g, c])
+    return acc
+
+
 def foot_seeds(
     H: cython.const[cython.double][:, :],
     grid: cython.const[cython.double][:],
@@ -524,13 +548,10 @@ def foot_seeds(
     """
     i: cython.Py_ssize_t
     g: cython.Py_ssize_t
-    c: cython.Py_ssize_t
     j: cython.Py_ssize_t
     ng: cython.Py_ssize_t = grid.shape[0]
     m: cython.Py_ssize_t = P.shape[0]
-    d: cython.Py_ssize_t = P.shape[1]
-    B: cython.double[:, :] = np.empty((H.shape[0], H.shape[1]))
-    X: cython.double[:, :] = np.empty((ng, d))
+    X: cython.double[:, :] = _grid_points(H, grid, P.shape[1])
     D: cython.double[:] = np.empty(ng)
     key: cython.double[:] = np.empty(ng)
     pick: cython.Py_ssize_t[:] = np.empty(k, dtype=np.intp)
@@ -538,17 +559,11 @@ def foot_seeds(
     d_out = np.empty(m * k)
     uo: cython.double[:] = u_out
     do: cython.double[:] = d_out
-    acc: cython.double
     lo: cython.double
     hi: cython.double
-    for g in range(ng):
-        _at(H, grid[g], B, X[g])
     for i in range(m):
         for g in range(ng):
-            acc = (P[i, 0] - X[g, 0]) * (P[i, 0] - X[g, 0])
-            for c in range(1, d):
-                acc = acc + (P[i, c] - X[g, c]) * (P[i, c] - X[g, c])
-            D[g] = acc
+            D[g] = _sq(P, i, X, g)
         for g in range(ng):  # no neighbour past an end: an infinite one (NaN is no minimum)
             lo = D[g - 1] if g > 0 else _INF
             hi = D[g + 1] if g < ng - 1 else _INF
@@ -597,29 +612,18 @@ def surely_far(
     """
     g: cython.Py_ssize_t
     i: cython.Py_ssize_t
-    c: cython.Py_ssize_t
-    ng: cython.Py_ssize_t = grid.shape[0]
-    d: cython.Py_ssize_t = P.shape[1]
-    B: cython.double[:, :] = np.empty((H.shape[0], H.shape[1]))
-    X: cython.double[:, :] = np.empty((ng, d))
+    X: cython.double[:, :] = _grid_points(H, grid, P.shape[1])
     acc: cython.double
     near: cython.double
     chord: cython.double = -_INF
-    for g in range(ng):
-        _at(H, grid[g], B, X[g])
-    for g in range(ng - 1):  # np.max propagates NaN
-        acc = (X[g + 1, 0] - X[g, 0]) * (X[g + 1, 0] - X[g, 0])
-        for c in range(1, d):
-            acc = acc + (X[g + 1, c] - X[g, c]) * (X[g + 1, c] - X[g, c])
-        acc = sqrt(acc)
+    for g in range(grid.shape[0] - 1):  # np.max propagates NaN
+        acc = sqrt(_sq(X, g + 1, X, g))
         if acc > chord or acc != acc or chord != chord:
             chord = acc if chord == chord else chord
     for i in range(P.shape[0]):
         near = _INF
-        for g in range(ng):  # np.min propagates NaN
-            acc = (P[i, 0] - X[g, 0]) * (P[i, 0] - X[g, 0])
-            for c in range(1, d):
-                acc = acc + (P[i, c] - X[g, c]) * (P[i, c] - X[g, c])
+        for g in range(grid.shape[0]):  # np.min propagates NaN
+            acc = _sq(P, i, X, g)
             if acc < near or acc != acc or near != near:
                 near = acc if near == near else near
         if sqrt(near) > tol + chord:
