@@ -42,6 +42,7 @@ from typing import Literal
 import numpy as np
 from numpy.polynomial import polynomial as P
 
+from ._kernels.certify import fold_bisect
 from ._kernels.polish import foot_newton, foot_seeds, surely_far
 from ._types import FloatArray
 from .curves import RationalBezier, _decasteljau
@@ -247,7 +248,10 @@ def _covered(p: Intersection, ovs: Sequence[Overlap], slack: float = 1e-12) -> b
 def _overlaps(a: RationalBezier, b: RationalBezier, items: list[Result], tol: float) -> list[Result]:
     pts = [r for r in items if isinstance(r, Intersection)]
     ovs = [r for r in items if isinstance(r, Overlap)]
-    if not ((len(pts) >= 2 and any(p.kind == "tangent" for p in pts)) or (ovs and pts)):
+    # a meeting at a repeated end control point may be tangent whatever the kernel's label (its
+    # direction is that of a higher derivative: _end_kind), so it may bound a coincident stretch
+    maybe_tangent = any(p.kind == "tangent" or _singular_end(a, p.t) or _singular_end(b, p.u) for p in pts)
+    if not ((len(pts) >= 2 and maybe_tangent) or (ovs and pts)):
         return items
     found = _chains(a, b, pts, ovs, tol)
     if not found:
@@ -268,7 +272,8 @@ def self_overlaps(pieces: Sequence[tuple[Overlap, bool]]) -> list[Overlap]:
     Returns
     -------
     list of Overlap
-        Sorted by ``t``, chained overlaps (one's end is the next one's start) merged.
+        Sorted by ``t``, chained overlaps (one's end is the next one's start, ``u`` running the
+        same way) merged.
 
     Examples
     --------
@@ -276,33 +281,32 @@ def self_overlaps(pieces: Sequence[tuple[Overlap, bool]]) -> list[Overlap]:
     >>> self_overlaps(parts)
     [Overlap(t=(0.0, 0.5), u=(1.0, 0.5), kind='overlap')]
     """
-    ovs = sorted((o for o, _ in pieces), key=lambda o: o.t)
     out: list[Overlap] = []
-    for o in ovs:
-        if out and abs(out[-1].t[1] - o.t[0]) <= 1e-12 and abs(out[-1].u[1] - o.u[0]) <= 1e-12:
-            last = out.pop()
-            out.append(Overlap(t=(last.t[0], o.t[1]), u=(last.u[0], o.u[1])))
-        else:
+    for o in sorted((o for o, _ in pieces), key=lambda o: o.t):
+        k = next((k for k, q in enumerate(out) if _continues(q, o)), None)
+        if k is None:
             out.append(o)
-    return out
+        else:
+            out[k] = Overlap(t=(out[k].t[0], o.t[1]), u=(out[k].u[0], o.u[1]))
+    return sorted(out, key=lambda o: o.t)
+
+
+def _continues(q: Overlap, o: Overlap) -> bool:
+    """``o`` starts where ``q`` ends (within 1e-12 on both curves) and runs ``u`` the same way.
+
+    Across a fold ``u`` turns back: the two stretches are then two overlaps, never one.
+    """
+    return (abs(q.t[1] - o.t[0]) <= 1e-12 and abs(q.u[1] - o.u[0]) <= 1e-12
+            and (q.u[1] > q.u[0]) == (o.u[1] > o.u[0]))
 
 
 def _fold(c: RationalBezier, t: float, u: float) -> float | None:
-    """The fold parameter between ``t`` and ``u`` where ``c`` turns back (derivative reverses)."""
-    ref = c.derivative(t)
+    """The fold parameter between ``t`` and ``u`` where ``c`` turns back (derivative reverses).
 
-    def along(x: float) -> float:  # c'(x) . c'(t); a 1-D float array takes derivative's fast path
-        return float(c.derivative(np.array([x]))[0] @ ref)
-
-    lo, hi = t, u
-    if along(hi) >= 0.0:
-        return None
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if mid in (lo, hi):
-            break
-        lo, hi = (mid, hi) if along(mid) > 0.0 else (lo, mid)
-    return 0.5 * (lo + hi)
+    Bisection on the sign of ``c'(x) . c'(t)`` (compiled: :func:`relief_cad._kernels.certify.fold_bisect`).
+    """
+    m = fold_bisect(c.homogeneous, c.derivative(t), t, u)
+    return None if math.isnan(m) else m
 
 
 # ---------------------------------------------------------------------------- range
@@ -348,7 +352,7 @@ def _to_fold(c: RationalBezier, o: Overlap, tol: float) -> Overlap:
     cut back to the fold. Otherwise ``o`` is returned as it is.
     """
     (t0, t1), (u0, u1) = o.t, o.u
-    if u1 > t1:
+    if u0 > u1 > t1:  # u runs back towards t: a retrace (never a stretch run twice the same way)
         m = _fold(c, t1, u1)
         if m is not None and m > t1 and _coincide(c, c, t1, m, u1, m, tol):
             return Overlap(t=(t0, m), u=(u0, m))
@@ -617,10 +621,19 @@ def _locate(a: RationalBezier, b: RationalBezier, p: Intersection, tol: float) -
 
 # ---------------------------------------------------------------------------- entry point
 def _singular_end(c: RationalBezier, t: float) -> bool:
+    """True at an end of ``c`` whose first control leg vanishes, or is below :data:`_SINGULAR` of the size.
+
+    The second case is an end made by cutting a curve where its derivative vanishes (a piece of
+    a self-intersection cut at a fold): the repeated control point is then repeated only up to
+    rounding.
+    """
     if t != 0.0 and t != 1.0:
         return False
     pts = c.control_points
-    return bool(np.all(pts[0] == pts[1])) if t == 0.0 else bool(np.all(pts[-1] == pts[-2]))
+    i, j = (0, 1) if t == 0.0 else (-1, -2)
+    if np.all(pts[i] == pts[j]):
+        return True
+    return bool(np.abs(pts[j] - pts[i]).max() <= _SINGULAR * np.abs(pts - pts[i]).max())
 
 
 def whole_overlap(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap | None:

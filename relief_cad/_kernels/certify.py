@@ -7,9 +7,12 @@ Compiled by Cython (pure-Python mode) when the package is built; see :mod:`relie
 
 from __future__ import annotations
 
-import cython
+import math
 
-from .bezier import _eval
+import cython
+import numpy as np
+
+from .bezier import _eval, _rounds
 
 
 @cython.cfunc
@@ -141,3 +144,57 @@ def _polish_dd(
         if small:
             return t, u, True
     return t, u, False
+
+
+@cython.cfunc
+@cython.exceptval(check=False)
+def _along(H: cython.const[cython.double][:, :], x: cython.double, ref: cython.const[cython.double][:],
+           B: cython.double[:, :]) -> cython.double:
+    """``c'(x) . ref`` for the rational curve ``H`` ((n + 1, d + 1), weights last), sign-faithful.
+
+    The derivative has the bits of :meth:`relief_cad.RationalBezier.derivative` (the same de
+    Casteljau rounds, then the quotient rule in its order); the dot product is summed in
+    double-double from exact products, so its sign is right unless it is below about 2**-100 of
+    its terms (numpy's dot rounds, and where OpenBLAS fuses, differs from machine to machine).
+    """
+    c: cython.Py_ssize_t
+    k: cython.Py_ssize_t = H.shape[1]
+    nd: cython.double = H.shape[0] - 1
+    s: cython.double = 1.0 - x
+    _rounds(H, x, B)
+    w: cython.double = s * B[0, k - 1] + x * B[1, k - 1]
+    dw: cython.double = nd * (B[1, k - 1] - B[0, k - 1])
+    hi: cython.double = 0.0
+    lo: cython.double = 0.0
+    for c in range(k - 1):
+        pt = (s * B[0, c] + x * B[1, c]) / w
+        der = (nd * (B[1, c] - B[0, c]) - pt * dw) / w
+        ph, pl = _two_prod(der, ref[c])
+        hi, lo = _dd_add(hi, lo, ph, pl)
+    return hi
+
+
+def fold_bisect(H: cython.const[cython.double][:, :], ref: cython.const[cython.double][:],
+                t: cython.double, u: cython.double) -> cython.double:
+    """The parameter in ``(t, u)`` where the curve ``H`` turns back against ``ref``, or NaN.
+
+    ``H``: (n + 1, d + 1) homogeneous control points (weights last); ``ref`` (d,): the derivative
+    at ``t``. NaN when ``c'(u) . ref >= 0`` (no reversal); otherwise bisection keeps
+    ``c'(lo) . ref > 0 >= c'(hi) . ref`` down to adjacent doubles (at most 200 halvings) and
+    returns the midpoint. See :func:`relief_cad.contacts._fold`.
+    """
+    B: cython.double[:, :] = np.empty((H.shape[0], H.shape[1]))
+    lo: cython.double = t
+    hi: cython.double = u
+    mid: cython.double
+    if _along(H, hi, ref, B) >= 0.0:
+        return math.nan
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if mid == lo or mid == hi:
+            break
+        if _along(H, mid, ref, B) > 0.0:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)

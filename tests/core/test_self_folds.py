@@ -1,0 +1,135 @@
+"""Straight curves that fold back: each pair of runs along the line is one self-overlap.
+
+A curve whose control points lie on one line traces that line back and forth: it turns back
+where the derivative of its coordinate along the line changes sign (a fold). Between two folds it
+runs one way (a run); two runs cover a common stretch, which is one :class:`Overlap` of the
+curve with itself. The truth here comes from the line coordinate alone, ``x(t) = N(t) / D(t)``
+with numpy power-series polynomials: the folds are the roots of ``N' D - N D'`` in (0, 1), and an
+overlap's ends are where one run reaches the other's end value. Nothing of relief_cad is used.
+"""
+
+from __future__ import annotations
+
+from math import comb
+
+import numpy as np
+import pytest
+from numpy.polynomial import polynomial as P
+
+from relief_cad import Overlap, RationalBezier, intersect
+from relief_cad.contacts import self_overlaps
+
+
+def _power(coef: list[float]) -> np.ndarray:
+    """Power-series coefficients of the Bernstein polynomial with coefficients ``coef``."""
+    n = len(coef) - 1
+    out = np.zeros(n + 1)
+    for i, c in enumerate(coef):
+        out += c * comb(n, i) * P.polymul(P.polypow([0.0, 1.0], i), P.polypow([1.0, -1.0], n - i))[: n + 1]
+    return out
+
+
+def _roots_in(poly: np.ndarray, lo: float, hi: float) -> list[float]:
+    """Real roots of ``poly`` in ``(lo, hi)``: the companion matrix's, then Newton-polished (simple roots)."""
+    der = P.polyder(poly)
+    out = []
+    for r in P.polyroots(poly):
+        if abs(r.imag) < 1e-6:
+            x = float(r.real)
+            for _ in range(8):
+                slope = float(P.polyval(x, der))
+                if slope == 0.0:
+                    break
+                x -= float(P.polyval(x, poly)) / slope
+            if lo < x < hi:
+                out.append(x)
+    return sorted(out)
+
+
+def _truth(xs: list[float], ws: list[float]) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+    """The self-overlaps ``((t0, t1), (u0, u1))`` of the straight curve with line coordinates ``xs``."""
+    num, den = _power([w * x for w, x in zip(ws, xs, strict=True)]), _power(ws)
+    x = lambda t: float(P.polyval(t, num) / P.polyval(t, den))  # noqa: E731
+    folds = _roots_in(P.polysub(P.polymul(P.polyder(num), den), P.polymul(num, P.polyder(den))), 1e-9, 1 - 1e-9)
+    ends = [0.0, *folds, 1.0]
+    runs = list(zip(ends[:-1], ends[1:], strict=True))
+
+    def at(run: tuple[float, float], v: float) -> float:  # the parameter of the run where x = v
+        if abs(x(run[0]) - v) < 1e-12:
+            return run[0]
+        if abs(x(run[1]) - v) < 1e-12:
+            return run[1]
+        (root,) = _roots_in(P.polysub(num, v * den), run[0] - 1e-12, run[1] + 1e-12)
+        return root
+
+    out = []
+    for i, ra in enumerate(runs):
+        for rb in runs[i + 1:]:
+            lo = max(min(x(ra[0]), x(ra[1])), min(x(rb[0]), x(rb[1])))
+            hi = min(max(x(ra[0]), x(ra[1])), max(x(rb[0]), x(rb[1])))
+            if hi - lo > 1e-6:
+                t0, t1 = sorted((at(ra, lo), at(ra, hi)))
+                out.append(((t0, t1), (at(rb, x(t0)), at(rb, x(t1)))))
+    return out
+
+
+def _straight(xs: list[float], ws: list[float], angle: float) -> RationalBezier:
+    d = np.array([np.cos(angle), np.sin(angle)])
+    return RationalBezier(np.array(xs)[:, None] * d + np.array([0.25, -0.5]), np.array(ws))
+
+
+def _check(c: RationalBezier, truth: list[tuple[tuple[float, float], tuple[float, float]]]) -> None:
+    res = intersect(c)
+    assert res.complete
+    assert all(isinstance(r, Overlap) for r in res), res
+    assert len(res) == len(truth), (res, truth)
+    for (t, u) in truth:
+        assert any(np.allclose(o.t, t, atol=1e-9, rtol=0) and np.allclose(o.u, u, atol=1e-9, rtol=0)
+                   for o in res), (res, t, u)
+
+
+@pytest.mark.parametrize("seed", range(24))
+def test_a_straight_curve_folding_back_once_overlaps_itself_once(seed: int) -> None:
+    rng = np.random.default_rng(seed)
+    n = int(rng.integers(2, 6))
+    ws = (rng.random(n + 1) + 0.5).tolist() if seed % 2 else [1.0] * (n + 1)
+    while True:  # a curve with exactly one fold, not within 1e-3 of an end
+        xs = rng.standard_normal(n + 1).tolist()
+        truth = _truth(xs, ws)
+        if len(truth) == 1 and 1e-3 < truth[0][0][1] < 1 - 1e-3:
+            break
+    _check(_straight(xs, ws, rng.random() * np.pi), truth)
+
+
+@pytest.mark.parametrize("xs", [[0.0, 3.0, -2.5, 1.2], [0.3, 2.0, -1.0, 1.7], [-1.0, 2.5, -2.0, 0.5]])
+def test_a_straight_cubic_folding_back_twice_overlaps_itself_three_times(xs: list[float]) -> None:
+    """Out, back past the start, out again: three runs, each pair one overlap.
+
+    The pieces cut at the folds start and end where the derivative vanishes (their end control
+    points repeat up to rounding); two such pieces along one line were two crossings, not an
+    overlap, and an overlap of runs going the same way was once closed up to a fold.
+    """
+    truth = _truth(xs, [1.0] * 4)
+    assert len(truth) == 3
+    _check(_straight(xs, [1.0] * 4, 0.927295218), truth)
+
+
+def test_pieces_cut_at_folds_overlap_where_they_run_along_each_other() -> None:
+    """The first and last runs of a twice-folding cubic, as curves of their own: one overlap."""
+    xs = [-1.0, 2.5, -2.0, 0.5]
+    c = _straight(xs, [1.0] * 4, 0.3)
+    f1, f2 = _roots_in(P.polyder(_power(xs)), 0.0, 1.0)
+    a, b = c.segment(0.0, f1), c.segment(f2, 1.0)   # each ends at a fold: a vanishing derivative
+    (o,) = intersect(a, b)
+    assert isinstance(o, Overlap)
+    assert o.t[1] == 1.0 and o.u[0] == 0.0
+    assert np.allclose(a(o.t[0]), b(0.0), atol=1e-12) and np.allclose(b(o.u[1]), a(1.0), atol=1e-12)
+
+
+def test_self_overlaps_never_chain_across_a_fold() -> None:
+    """Two stretches meeting end to start, the second running back in ``u``, stay two overlaps."""
+    out_and_on = Overlap(t=(0.3, 0.45), u=(0.7, 0.84))
+    back = Overlap(t=(0.45, 0.7), u=(0.84, 0.7))
+    assert self_overlaps([(out_and_on, True), (back, True)]) == [out_and_on, back]
+    on = Overlap(t=(0.45, 0.6), u=(0.84, 0.9))
+    assert self_overlaps([(out_and_on, True), (on, True)]) == [Overlap(t=(0.3, 0.6), u=(0.7, 0.9))]
