@@ -47,6 +47,25 @@ def _in_overlap(
 
 
 @cython.cfunc
+@cython.exceptval(check=False)
+def _two_roots(pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssize_t, rnd: cython.double,
+               k_crossing: cython.double) -> cython.bint:
+    """True when points ``i`` and ``j`` are an exact end meeting and a crossing root: two roots.
+
+    Within 1e-3 in parameter, with the curves within tol all along between them, an end contact
+    and a root are otherwise one contact. But an end meeting closer than rounding (``<= rnd``) is
+    itself a root, and a transversal root more than 1e-4 away in both parameters is another (the
+    rounding noise of a tangent end meeting stays far closer): the crossing of a loop thinner than
+    tol next to the end (a self-intersection's pieces meeting near a cusp) was lost in the end
+    contact.
+    """
+    e: cython.Py_ssize_t = i if pts[i, 4] == 2.0 else j
+    r: cython.Py_ssize_t = j if e == i else i
+    apart: cython.bint = abs(pts[i, 0] - pts[j, 0]) > 1e-4 and abs(pts[i, 1] - pts[j, 1]) > 1e-4
+    return apart and pts[e, 4] == 2.0 and pts[e, 2] <= rnd and pts[r, 4] == 1.0 and pts[r, 3] == k_crossing
+
+
+@cython.cfunc
 def _room(a: cython.double[:, :], n: cython.Py_ssize_t) -> cython.double[:, :]:
     """``a`` itself when it has at least ``n`` rows, else a larger copy (:func:`._grow`)."""
     if n <= a.shape[0]:
@@ -712,6 +731,7 @@ def intersect_pair_kernel(
                     or pts[i, 4] == 2.0
                     or pts[j, 4] == 2.0
                 )
+                and not _two_roots(pts, i, j, rnd, k_crossing)
             ):
                 # one contact if the curves stay within tol all along between them
                 same = True

@@ -1,4 +1,6 @@
-"""Straight curves that fold back: each pair of runs along the line is one self-overlap.
+"""Self-intersections where a curve turns back: straight folds, and small loops at a cusp.
+
+Straight curves that fold back: each pair of runs along the line is one self-overlap.
 
 A curve whose control points lie on one line traces that line back and forth: it turns back
 where the derivative of its coordinate along the line changes sign (a fold). Between two folds it
@@ -133,3 +135,48 @@ def test_self_overlaps_never_chain_across_a_fold() -> None:
     assert self_overlaps([(out_and_on, True), (back, True)]) == [out_and_on, back]
     on = Overlap(t=(0.45, 0.6), u=(0.84, 0.9))
     assert self_overlaps([(out_and_on, True), (on, True)]) == [Overlap(t=(0.3, 0.6), u=(0.7, 0.9))]
+
+
+def _double_point(xs: list[float], ys: list[float], guess: tuple[float, float]) -> tuple[float, float]:
+    """The double point ``c(t) = c(u)``, ``t < u``, of a polynomial cubic, to 50 digits (mpmath).
+
+    On the divided differences ``(c(t) - c(u)) / (t - u)``, written out in the power basis (no
+    division), so the trivial solution ``t = u`` is not a root.
+    """
+    import mpmath as mp
+
+    mp.mp.dps = 50
+    power = [[mp.mpf(0)] * 4 for _ in range(2)]
+    for k, coord in enumerate((xs, ys)):
+        for i, v in enumerate(coord):  # Bernstein to power basis, exactly in mpmath
+            for j in range(i, 4):
+                power[k][j] += mp.mpf(v) * comb(3, i) * comb(3 - i, j - i) * (-1) ** (j - i)
+
+    def divided(t: object, u: object) -> list[object]:
+        return [sum(a[j] * sum(t ** q * u ** (j - 1 - q) for q in range(j)) for j in range(1, 4)) for a in power]
+
+    t, u = mp.findroot(divided, (mp.mpf(guess[0]), mp.mpf(guess[1])))
+    return float(t), float(u)
+
+
+@pytest.mark.parametrize("gap", [1e-3, 1e-4, 1e-5, 1e-6, 1e-7])
+def test_a_small_loop_next_to_a_cusp_is_found(gap: float) -> None:
+    """(0,0), (1,1), (0,1), (1 - gap, 0): a cusp at t = 1/2 for gap 0, a loop for gap > 0.
+
+    The loop is split between the two halves of the curve, whose joint lies inside it; for gap
+    1e-6 the loop is 5.6e-7 long and 2.5e-10 wide, thinner than the tolerance (1.25e-9), and its
+    crossing (4.3e-4 from the joint in parameter) was lost in the joint's own contact.
+    """
+    xs, ys = [0.0, 1.0, 0.0, 1.0 - gap], [0.0, 1.0, 1.0, 0.0]
+    d = 0.433 * gap ** 0.5
+    t, u = _double_point(xs, ys, (0.5 - d, 0.5 + d))
+    assert 0.0 < t < 0.5 < u < 1.0 and u - t > 1e-4
+    (hit,) = intersect(RationalBezier(np.array([xs, ys]).T))
+    assert abs(hit.t - t) < 1e-9 and abs(hit.u - u) < 1e-9
+
+
+@pytest.mark.parametrize("gap", [1e-3, 1e-5, 1e-7, 1e-9])
+def test_no_loop_on_the_other_side_of_the_cusp(gap: float) -> None:
+    xs, ys = [0.0, 1.0, 0.0, 1.0 + gap], [0.0, 1.0, 1.0, 0.0]
+    res = intersect(RationalBezier(np.array([xs, ys]).T))
+    assert res.complete and len(res) == 0
