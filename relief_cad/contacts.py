@@ -406,9 +406,19 @@ def refine_self(c: RationalBezier, items: Sequence[Result], tol: float) -> list[
 
 
 def _drop_nested(ovs: list[Overlap]) -> list[Overlap]:
+    """``ovs`` without the overlaps that lie inside another, the first of two that lie inside each other.
+
+    Ends are compared within 1e-9: the same fold end, reached by two chains, differs by roundings.
+    """
     ovs = list(dict.fromkeys(ovs))
-    return [o for o in ovs if not any(q is not o and q.t[0] <= o.t[0] and o.t[1] <= q.t[1]
-                                      and min(q.u) <= min(o.u) and max(o.u) <= max(q.u) for q in ovs)]
+    return [o for i, o in enumerate(ovs)
+            if not any(j != i and _inside(o, q) and (j < i or not _inside(q, o)) for j, q in enumerate(ovs))]
+
+
+def _inside(o: Overlap, q: Overlap, slack: float = 1e-9) -> bool:
+    """True when ``o`` lies within ``q`` on both curves, up to ``slack`` in parameter."""
+    return (q.t[0] - slack <= o.t[0] and o.t[1] <= q.t[1] + slack
+            and min(q.u) - slack <= min(o.u) and max(o.u) <= max(q.u) + slack)
 
 
 # ---------------------------------------------------------------------------- directions

@@ -87,7 +87,6 @@ from ._kernels import (
     intersect_batch_kernel,
     intersect_one_kernel,
 )
-from ._kernels.certify import fold_bisect
 from ._types import FloatArray
 from .contacts import needs_refining, refine_contacts, refine_self, self_overlaps, whole_overlap
 from .curves import RationalBezier
@@ -97,6 +96,7 @@ from .errors import (
     NonFiniteError,
     ShapeError,
 )
+from .pieces import monotone_pieces
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
 from .space import intersect_space
 from .tolerances import (
@@ -253,78 +253,10 @@ def _simple_piece(p: FloatArray) -> bool:
     return widest > np.pi + 1e-12
 
 
-def _line_of(p: FloatArray, tol: float) -> FloatArray | None:
-    """Unit direction of a line through ``p[0]`` that all of ``p`` (m, 2) is within ``tol`` of, or None.
-
-    The line runs to the control point farthest from ``p[0]``; the curve lies in the hull of ``p``.
-    """
-    legs = p - p[0]
-    far = np.hypot(legs[:, 0], legs[:, 1])
-    k = int(np.argmax(far))
-    if not far[k] > 0.0:
-        return None
-    d = legs[k] / far[k]
-    return d if float(np.abs(legs[:, 0] * d[1] - legs[:, 1] * d[0]).max()) <= tol else None
-
-
-def _fold_split(c: RationalBezier, tol: float) -> float | None:
-    """Where a piece lying within ``tol`` of a line turns back along it, in (0, 1); else None.
-
-    Such a piece (a curve run out and back) is never simple, however small: halving it ten times
-    was the cost of a retracing curve (2.6 ms for a quadratic). Cut at the fold, each half runs
-    one way (:func:`_runs_one_way`). The sense of the line is that of the first control leg that
-    moves along it (a piece cut at a fold starts with a vanishing derivative); a fold within 1e-6
-    of an end is left to halving.
-    """
-    p = c.control_points
-    d = _line_of(p, tol)
-    if d is None:
-        return None
-    along = np.diff(p, axis=0) @ d
-    moves = np.flatnonzero(np.abs(along) > 1e-12 * float(np.abs(along).max(initial=0.0)))
-    if moves.size == 0:
-        return None
-    m = fold_bisect(c.homogeneous, d * np.sign(along[moves[0]]), 0.0, 1.0)
-    return m if 1e-6 < m < 1.0 - 1e-6 else None
-
-
-def _runs_one_way(p: FloatArray, tol: float) -> bool:
-    """True when ``p`` lies within ``tol`` of a line and no leg runs back along it by more than ``tol``.
-
-    Such a piece meets itself nowhere farther than ``tol`` from its own point (the halves of a fold).
-    """
-    d = _line_of(p, tol)
-    return d is not None and bool((np.diff(p, axis=0) @ d >= -tol).all())
-
-
-def _monotone_pieces(curve: RationalBezier, tol: float) -> list[tuple[float, float, RationalBezier]]:
-    """``curve`` cut into pieces that cannot cross themselves: ``(s0, s1, piece)`` sorted by ``s0``.
-
-    A piece is halved until :func:`_simple_piece` (at most ten times); a straight piece that folds
-    back is cut at its fold instead, and its halves are kept once they run one way.
-    """
-    pieces: list[tuple[float, float, RationalBezier]] = []
-    todo = [(0.0, 1.0, curve, 0, False)]
-    while todo:
-        s0, s1, c, depth, folded = todo.pop()
-        p = c.control_points
-        if depth >= 10 or _simple_piece(p) or (folded and _runs_one_way(p, tol)):
-            pieces.append((s0, s1, c))
-            continue
-        m = _fold_split(c, tol)
-        at = 0.5 if m is None else m
-        left, right = c.split(at)
-        sm = s0 + at * (s1 - s0) if m is not None else 0.5 * (s0 + s1)
-        todo.append((sm, s1, right, depth + 1, folded or m is not None))
-        todo.append((s0, sm, left, depth + 1, folded or m is not None))
-    pieces.sort(key=lambda x: x[0])
-    return pieces
-
-
 def _self_planar(p: FloatArray, w: FloatArray, tol: float, budget: int) -> IntersectionList:
     """Self-intersections: split into monotone pieces, intersect pairs of pieces."""
     curve = RationalBezier(p, w)
-    pieces = _monotone_pieces(curve, tol)
+    pieces = monotone_pieces(curve, tol, _simple_piece, 10)
     items: list[Result] = []
     boxes: list[ParameterBox] = []
     overlaps: list[tuple[Overlap, bool]] = []

@@ -58,6 +58,7 @@ from ._types import FloatArray
 from .contacts import needs_refining, range_exponent, refine_contacts, refine_self, whole_overlap
 from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError
+from .pieces import monotone_pieces
 from .relief import ReliefPerspective, central_projection
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
 from .tolerances import _sampled_tolerance, is_point_like, resolve_tolerance
@@ -320,18 +321,7 @@ def _self_rows(curve: RationalBezier, tol: float, budget: int) -> FloatArray:
     """Self-intersections: split into monotone pieces, intersect every pair of pieces."""
     if is_point_like(curve, tol):
         return np.empty((0, SPACE_COLS))  # a point has no self-intersection
-    pieces: list[tuple[float, float, RationalBezier]] = []
-    stack = [(0.0, 1.0, curve, 0)]
-    while stack:
-        s0, s1, piece, depth = stack.pop()
-        if _monotone(piece.control_points) or depth >= 12:
-            pieces.append((s0, s1, piece))
-            continue
-        left, right = piece.split(0.5)
-        mid = 0.5 * (s0 + s1)
-        stack.append((mid, s1, right, depth + 1))
-        stack.append((s0, mid, left, depth + 1))
-    pieces.sort(key=lambda p: p[0])
+    pieces = monotone_pieces(curve, tol, _monotone, 12)
     near = _boxes_near([p.control_points for _, _, p in pieces], tol)
     rows: list[FloatArray] = []
     for i, (a0, a1, pa) in enumerate(pieces):

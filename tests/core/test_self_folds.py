@@ -75,9 +75,11 @@ def _truth(xs: list[float], ws: list[float]) -> list[tuple[tuple[float, float], 
     return out
 
 
-def _straight(xs: list[float], ws: list[float], angle: float) -> RationalBezier:
-    d = np.array([np.cos(angle), np.sin(angle)])
-    return RationalBezier(np.array(xs)[:, None] * d + np.array([0.25, -0.5]), np.array(ws))
+def _straight(xs: list[float], ws: list[float], angle: float, dim: int = 2) -> RationalBezier:
+    """The line coordinates ``xs`` placed on a line at ``angle`` (tilted out of the plane in space)."""
+    d = np.array([np.cos(angle), np.sin(angle), 0.375])[:dim]
+    d /= np.linalg.norm(d)
+    return RationalBezier(np.array(xs)[:, None] * d + np.array([0.25, -0.5, 0.125])[:dim], np.array(ws))
 
 
 def _check(c: RationalBezier, truth: list[tuple[tuple[float, float], tuple[float, float]]]) -> None:
@@ -90,8 +92,10 @@ def _check(c: RationalBezier, truth: list[tuple[tuple[float, float], tuple[float
                    for o in res), (res, t, u)
 
 
+@pytest.mark.parametrize("dim", [2, 3])
 @pytest.mark.parametrize("seed", range(24))
-def test_a_straight_curve_folding_back_once_overlaps_itself_once(seed: int) -> None:
+def test_a_straight_curve_folding_back_once_overlaps_itself_once(seed: int, dim: int) -> None:
+    """Planar and space self-intersections (each cuts its pieces in :mod:`relief_cad.pieces`)."""
     rng = np.random.default_rng(seed)
     n = int(rng.integers(2, 6))
     ws = (rng.random(n + 1) + 0.5).tolist() if seed % 2 else [1.0] * (n + 1)
@@ -100,7 +104,7 @@ def test_a_straight_curve_folding_back_once_overlaps_itself_once(seed: int) -> N
         truth = _truth(xs, ws)
         if len(truth) == 1 and 1e-3 < truth[0][0][1] < 1 - 1e-3:
             break
-    _check(_straight(xs, ws, rng.random() * np.pi), truth)
+    _check(_straight(xs, ws, rng.random() * np.pi, dim), truth)
 
 
 @pytest.mark.parametrize("xs", [[0.0, 3.0, -2.5, 1.2], [0.3, 2.0, -1.0, 1.7], [-1.0, 2.5, -2.0, 0.5]])
