@@ -218,25 +218,69 @@ def _chains(a: RationalBezier, b: RationalBezier, pts: list[Intersection], ovs: 
     """
     # a transversal crossing cannot end a coincident stretch: only tangent and end contacts
     # (and overlap ends) are nodes; crossings inside a stretch (a loop's double point) are covered
-    nodes = sorted({(p.t, p.u) for p in pts if p.kind == "tangent" or p.t in (0.0, 1.0) or p.u in (0.0, 1.0)}
-                   | {(o.t[0], o.u[0]) for o in ovs}
-                   | {(o.t[1], o.u[1]) for o in ovs} | (_end_nodes(a, b, tol) if ends else set()))
+    known = ({(p.t, p.u) for p in pts if p.kind == "tangent" or p.t in (0.0, 1.0) or p.u in (0.0, 1.0)}
+             | {(o.t[0], o.u[0]) for o in ovs} | {(o.t[1], o.u[1]) for o in ovs}
+             | (_end_nodes(a, b, tol) if ends else set()))
+    # a fold within 1e-6 of a known contact in both parameters adds no stretch (the tip of a
+    # loop thinner than tol at the joint of a self-intersection's pieces)
+    folds = {f for f in (_fold_nodes(a, b, tol) if ends else set())
+             if not any(abs(f[0] - k[0]) <= 1e-6 and abs(f[1] - k[1]) <= 1e-6 for k in known)}
+    nodes = sorted(known | folds)
     linked = {((o.t[0], o.u[0]), (o.t[1], o.u[1])) for o in ovs}
     out: list[Overlap] = []
     i = 0
     while i < len(nodes):
         start = cur = nodes[i]
+        sense = 0.0  # u runs one way along a chain: a fold of either curve ends it
         while True:
-            nxt = next((q for q in nodes if q[0] > cur[0] and ((cur, q) in linked
-                        or _coincide(a, b, cur[0], q[0], cur[1], q[1], tol))), None)
+            nxt = next((q for q in nodes if q[0] > cur[0] and (q[1] - cur[1]) * sense >= 0.0
+                        and ((cur, q) in linked or _coincide(a, b, cur[0], q[0], cur[1], q[1], tol))), None)
             if nxt is None:
                 break
+            sense = sense or math.copysign(1.0, nxt[1] - cur[1])
             cur = nxt
         if cur != start:
             out.append(Overlap(t=(start[0], cur[0]), u=(start[1], cur[1])))
-            i = nodes.index(cur) + 1
+            i = nodes.index(cur)  # a chain ended by a fold: the next one may start there
         else:
             i += 1
+    return out
+
+
+def _fold_nodes(a: RationalBezier, b: RationalBezier, tol: float) -> set[tuple[float, float]]:
+    """Contacts at the folds of either curve (where it turns back) that lie within ``tol`` of the other.
+
+    A curve that runs along the other, turns back and runs along it again covers one stretch twice:
+    two overlaps that meet at the fold, where ``u`` (or ``t``) turns. Without a node there, the
+    chain ran from where the curve arrived to where it left, at the same point of the other curve.
+    """
+    out: set[tuple[float, float]] = set()
+    for c, other, swap in ((a, b, False), (b, a, True)):
+        for f in _folds(c):
+            p = c.evaluate(np.array([f]))
+            if _surely_far(other, p, tol):
+                continue
+            fu, fd = _foot(other, p, 0.25 * tol)
+            if fd[0] <= tol:
+                out.add((float(fu[0]), f) if swap else (f, float(fu[0])))
+    return out
+
+
+def _folds(c: RationalBezier) -> list[float]:
+    """Parameters in (0, 1) where ``c`` turns back on its own path.
+
+    The derivative reverses between grid points, and vanishes (below :data:`_SINGULAR` of the
+    size) where it reverses: a curve retraces itself only through a zero derivative. The sharp
+    tip of a loop next to a cusp turns without retracing and is no fold.
+    """
+    s = np.linspace(0.0, 1.0, 8 * (c.degree + 1) + 1)
+    d = c.derivative(s)
+    size = float(np.ptp(c.control_points, axis=0).max())
+    out = []
+    for k in np.flatnonzero((d[:-1] * d[1:]).sum(axis=1) < 0.0).tolist():
+        m = fold_bisect(c.homogeneous, d[k], float(s[k]), float(s[k + 1]))
+        if 0.0 < m < 1.0 and float(np.hypot.reduce(c.derivative(m))) <= _SINGULAR * size:
+            out.append(m)
     return out
 
 

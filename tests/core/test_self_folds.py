@@ -1,4 +1,4 @@
-"""Self-intersections where a curve turns back: straight folds, and small loops at a cusp.
+"""Curves that turn back: straight folds, small loops at a cusp, a fold over the end of another curve.
 
 Straight curves that fold back: each pair of runs along the line is one self-overlap.
 
@@ -184,3 +184,29 @@ def test_no_loop_on_the_other_side_of_the_cusp(gap: float) -> None:
     xs, ys = [0.0, 1.0, 0.0, 1.0 + gap], [0.0, 1.0, 1.0, 0.0]
     res = intersect(RationalBezier(np.array([xs, ys]).T))
     assert res.complete and len(res) == 0
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_a_curve_folding_back_over_the_end_of_another_overlaps_it_on_both_runs(dim: int) -> None:
+    """A straight cubic runs past the start of a segment on its line, turns back, and later runs
+    along it again: three overlaps, two of them meeting at the fold (x = 0.50381 > 0.5).
+
+    There was no contact at the fold, so the stretch out and back was one chain from where the
+    cubic arrives at the segment's start to where it leaves it (the same point of the segment):
+    it came out as a tangent point (planar) or an overlap stopping short of the fold (space).
+    """
+    xs, (b0, b1) = [0.0, 1.2, -0.3, 1.0], (0.5, 2.0)
+    num = _power(xs)
+    x = lambda t: float(P.polyval(t, num))  # noqa: E731
+    f1, f2 = _roots_in(P.polyder(num), 0.0, 1.0)
+    (ta,) = _roots_in(P.polysub(num, [b0]), 0.0, f1)
+    (tb,) = _roots_in(P.polysub(num, [b0]), f1, f2)
+    (tc,) = _roots_in(P.polysub(num, [b0]), f2, 1.0)
+    tip = (x(f1) - b0) / (b1 - b0)
+    truth = [((ta, f1), (0.0, tip)), ((f1, tb), (tip, 0.0)), ((tc, 1.0), (0.0, (x(1.0) - b0) / (b1 - b0)))]
+    d = np.array([0.48, 0.64, 0.6])[:dim] / np.linalg.norm([0.48, 0.64, 0.6][:dim])
+    res = intersect(RationalBezier(np.array(xs)[:, None] * d), RationalBezier(np.array([b0, b1])[:, None] * d))
+    assert all(isinstance(r, Overlap) for r in res) and len(res) == 3, res
+    for t, u in truth:
+        assert any(np.allclose(o.t, t, atol=1e-9, rtol=0) and np.allclose(o.u, u, atol=1e-9, rtol=0)
+                   for o in res), (res, t, u)
