@@ -218,14 +218,9 @@ def _chains(a: RationalBezier, b: RationalBezier, pts: list[Intersection], ovs: 
     """
     # a transversal crossing cannot end a coincident stretch: only tangent and end contacts
     # (and overlap ends) are nodes; crossings inside a stretch (a loop's double point) are covered
-    known = ({(p.t, p.u) for p in pts if p.kind == "tangent" or p.t in (0.0, 1.0) or p.u in (0.0, 1.0)}
-             | {(o.t[0], o.u[0]) for o in ovs} | {(o.t[1], o.u[1]) for o in ovs}
-             | (_end_nodes(a, b, tol) if ends else set()))
-    # a fold within 1e-6 of a known contact in both parameters adds no stretch (the tip of a
-    # loop thinner than tol at the joint of a self-intersection's pieces)
-    folds = {f for f in (_fold_nodes(a, b, tol) if ends else set())
-             if not any(abs(f[0] - k[0]) <= 1e-6 and abs(f[1] - k[1]) <= 1e-6 for k in known)}
-    nodes = sorted(known | folds)
+    nodes = sorted({(p.t, p.u) for p in pts if p.kind == "tangent" or p.t in (0.0, 1.0) or p.u in (0.0, 1.0)}
+                   | {(o.t[0], o.u[0]) for o in ovs} | {(o.t[1], o.u[1]) for o in ovs}
+                   | (_end_nodes(a, b, tol) | _fold_nodes(a, b, tol) if ends else set()))
     linked = {((o.t[0], o.u[0]), (o.t[1], o.u[1])) for o in ovs}
     out: list[Overlap] = []
     i = 0
@@ -514,10 +509,9 @@ def curve_direction(c: RationalBezier, t: float, side: Literal[1, -1] = 1) -> Fl
 
 
 def _is_singular(c: RationalBezier, t: float, kind: str) -> bool:
+    if t == 0.0 or t == 1.0:  # an end: singular when its control point is repeated
+        return _singular_end(c, t)
     pts = c.control_points
-    if t == 0.0 or t == 1.0:  # an end: singular exactly when its control point is repeated
-        i, j = (0, 1) if t == 0.0 else (-1, -2)
-        return bool(np.all(pts[i] == pts[j]))
     if kind != "tangent":
         return False
     size = float(np.ptp(pts, axis=0).max()) or 1.0
