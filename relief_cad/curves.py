@@ -154,13 +154,16 @@ class RationalBezier:
     relief_cad.errors.DegreeError: A curve needs at least 2 control points (degree >= 1), not 1.
     """
 
-    __slots__ = ("_h", "_points", "_weights", "_polynomial", "_hodo")
+    __slots__ = ("_h", "_points", "_weights", "_polynomial", "_hodo", "_sbox")
 
     _h: FloatArray
     _points: FloatArray | None
     _weights: FloatArray | None
     _polynomial: bool | None
     _hodo: RationalBezier | None  # the hodograph, built on first use (the curve is immutable)
+    # the sampled box of the default tolerance, filled on first use by
+    # relief_cad._kernels.bezier.sampled_tolerance (False: a degenerate sample)
+    _sbox: tuple[float, float, float, float, float, float, float, int] | bool | None
 
     def __init__(self, control_points: PointsLike, weights: ParamsLike | None = None) -> None:
         pts = as_real_array(control_points, "control_points")
@@ -199,6 +202,7 @@ class RationalBezier:
         self._weights = w
         self._polynomial = None
         self._hodo = None
+        self._sbox = None
         for arr in (pts, w):
             if arr is not None:
                 arr.flags.writeable = False

@@ -402,22 +402,34 @@ def _sample_into(H: cython.const[cython.double][:, :], P: cython.const[cython.do
 @cython.exceptval(check=False)
 def _rule(wk: cython.double[:, :], lo: cython.Py_ssize_t, dim: cython.Py_ssize_t, big: cython.double,
           rel: cython.double, ulps: cython.double) -> cython.double:
-    """The default tolerance from the samples' box (rows ``lo``, ``lo + 1`` of ``wk``); -1.0 if all is 0.
+    """:func:`_rule3` of the samples' box in rows ``lo`` (minima), ``lo + 1`` (maxima) of ``wk``."""
+    return _rule3(wk[lo, 0], wk[lo, 1], wk[lo, 2] if dim > 2 else 0.0, wk[lo + 1, 0], wk[lo + 1, 1],
+                  wk[lo + 1, 2] if dim > 2 else 0.0, dim, big, rel, ulps)
+
+
+@cython.cfunc
+@cython.exceptval(check=False)
+def _rule3(lo0: cython.double, lo1: cython.double, lo2: cython.double, hi0: cython.double,
+           hi1: cython.double, hi2: cython.double, dim: cython.Py_ssize_t, big: cython.double,
+           rel: cython.double, ulps: cython.double) -> cython.double:
+    """The default tolerance from the samples' box ``[lo, hi]`` (``dim``: 2 or 3); -1.0 if all is 0.
 
     :func:`relief_cad.tolerances._tolerance_at`'s rule and order of operations: the box diagonal
     scaled by ``scale = max(big, max |sample|)``, its squares summed coordinate by coordinate,
     ``rel * size + ulps * big``, never below the floor ``max(ulps * big, 1e-300)``.
     """
-    c: cython.Py_ssize_t
-    dc: cython.double
-    scale: cython.double = big
-    for c in range(dim):
-        scale = max(scale, abs(wk[lo, c]), abs(wk[lo + 1, c]))
+    scale: cython.double = max(big, abs(lo0), abs(hi0))
+    scale = max(scale, abs(lo1), abs(hi1))
+    if dim > 2:
+        scale = max(scale, abs(lo2), abs(hi2))
     if scale == 0.0:
         return -1.0
-    ss: cython.double = 0.0
-    for c in range(dim):
-        dc = (wk[lo + 1, c] - wk[lo, c]) / scale
+    dc: cython.double = (hi0 - lo0) / scale
+    ss: cython.double = 0.0 + dc * dc
+    dc = (hi1 - lo1) / scale
+    ss = ss + dc * dc
+    if dim > 2:
+        dc = (hi2 - lo2) / scale
         ss = ss + dc * dc
     size: cython.double = sqrt(ss) * scale
     tol: cython.double = rel * size + ulps * big
@@ -427,37 +439,27 @@ def _rule(wk: cython.double[:, :], lo: cython.Py_ssize_t, dim: cython.Py_ssize_t
     return max(tol, floor)
 
 
-@cython.cfunc
-def _curves_tolerance(curves: tuple, params: list, samples: cython.Py_ssize_t, rel: cython.double,
-                      ulps: cython.double) -> cython.double:
-    """The default tolerance of ``curves`` (see :func:`sampled_tolerance`); -1.0 for the general path."""
-    j: cython.Py_ssize_t
+def _sample_box(curve, params: list, samples: cython.Py_ssize_t):
+    """The box of one curve's samples and its largest ``|x|``: ``(lo0, lo1, lo2, hi0, hi1, hi2, big, dim)``.
+
+    A planar curve has ``lo2 = hi2 = 0.0`` (it lies in ``x_2 = 0``). ``False`` when a sampled
+    weight is not positive or a sample is not finite (see :func:`_sample_into`).
+    """
+    H: cython.const[cython.double][:, :] = curve.homogeneous
+    rows: cython.Py_ssize_t = H.shape[0]
+    dim: cython.Py_ssize_t = H.shape[1] - 1
     c: cython.Py_ssize_t
-    n: cython.Py_ssize_t
-    dim: cython.Py_ssize_t = 0
-    rows: cython.Py_ssize_t = 0
-    big: cython.double = 0.0
-    H: cython.const[cython.double][:, :]
-    hs = [curve.homogeneous for curve in curves]
-    for h in hs:
-        dim = max(dim, h.shape[1] - 1)
-        rows = max(rows, h.shape[0])
-    wk: cython.double[:, :] = np.empty((rows + 2, dim + 1))  # de Casteljau rows, the minima, the maxima
+    if rows < 2:
+        return False
+    wk: cython.double[:, :] = np.zeros((rows + 2, 4))  # de Casteljau rows, the minima, the maxima
     for c in range(dim):
         wk[rows, c] = _INF
         wk[rows + 1, c] = -_INF
-    for j in range(len(curves)):
-        H = hs[j]
-        n = H.shape[0] - 1
-        if n < 1:
-            return -1.0
-        big = _sample_into(H, curves[j].control_points, params[min(2 * n + 3, samples)], wk, rows, big)
-        if big < 0.0:
-            return -1.0
-        for c in range(H.shape[1] - 1, dim):  # fewer coordinates: the curve lies in x_d = 0
-            wk[rows, c] = min(wk[rows, c], 0.0)
-            wk[rows + 1, c] = max(wk[rows + 1, c], 0.0)
-    return _rule(wk, rows, dim, big, rel, ulps)
+    big = _sample_into(H, curve.control_points, params[min(2 * rows + 1, samples)], wk, rows, 0.0)
+    if big < 0.0:
+        return False
+    return (wk[rows, 0], wk[rows, 1], wk[rows, 2], wk[rows + 1, 0], wk[rows + 1, 1], wk[rows + 1, 2],
+            big, dim)
 
 
 def sampled_tolerance(curves: tuple, params: list, samples: cython.Py_ssize_t, rel: cython.double,
@@ -473,8 +475,40 @@ def sampled_tolerance(curves: tuple, params: list, samples: cython.Py_ssize_t, r
     curve of fewer coordinates than the others counts as lying in ``x_d = 0``. None when a sampled
     weight is not positive or a sample is not finite (the general path then raises or handles
     them), or when every coordinate is 0.
+
+    Each curve's box (:func:`_sample_box`) is kept in its ``_sbox`` slot (the curve is immutable):
+    a second call on the same curve does not sample it again. The boxes' union is exact (minima
+    and maxima), so the value does not depend on that cache.
     """
-    tol = _curves_tolerance(curves, params, samples, rel, ulps)
+    lo0: cython.double = _INF
+    lo1: cython.double = _INF
+    lo2: cython.double = _INF
+    hi0: cython.double = -_INF
+    hi1: cython.double = -_INF
+    hi2: cython.double = -_INF
+    big: cython.double = 0.0
+    dim: cython.Py_ssize_t = 0
+    x0: cython.double
+    x1: cython.double
+    x2: cython.double
+    y0: cython.double
+    y1: cython.double
+    y2: cython.double
+    b: cython.double
+    d: cython.Py_ssize_t
+    for curve in curves:
+        box = curve._sbox
+        if box is None:
+            box = _sample_box(curve, params, samples)
+            curve._sbox = box
+        if box is False:
+            return None
+        x0, x1, x2, y0, y1, y2, b, d = box
+        lo0, lo1, lo2 = min(lo0, x0), min(lo1, x1), min(lo2, x2)
+        hi0, hi1, hi2 = max(hi0, y0), max(hi1, y1), max(hi2, y2)
+        big = max(big, b)
+        dim = max(dim, d)
+    tol = _rule3(lo0, lo1, lo2, hi0, hi1, hi2, dim, big, rel, ulps)
     return None if tol < 0.0 else tol
 
 
