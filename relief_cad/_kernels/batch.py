@@ -114,6 +114,6 @@ def intersect_one_kernel(
     """
     if _boxes_apart(PA, PB, tol):
         return _NO_ROWS
-    res = np.empty((8, RES_COLS))
-    res, nres = intersect_pair_kernel(PA, WA, PB, WB, tol, budget, 0, res, 0)
+    # no ``res``: the pair kernel makes its result rows in its own scratch buffer (one allocation)
+    res, nres = intersect_pair_kernel(PA, WA, PB, WB, tol, budget, 0, None, 0)
     return res[:nres] if nres else _NO_ROWS

@@ -17,10 +17,21 @@ from cython.cimports.libc.math import hypot
 from .bezier import _cartesian, _curve_box_update, _eval, _frame, _grow, _homog_into, _segment
 from .certify import _polish_dd
 from .clip import clip_range_kernel, fat_line_kernel
-from .constants import _EPS, _ROUND, _SPLIT_RATIO, KIND_CROSSING, KIND_OVERLAP, KIND_TANGENT, KIND_UNRESOLVED
+from .constants import (
+    _EPS,
+    _ROUND,
+    _SPLIT_RATIO,
+    KIND_CROSSING,
+    KIND_OVERLAP,
+    KIND_TANGENT,
+    KIND_UNRESOLVED,
+    RES_COLS,
+)
 from .polish import _angle_sin, _closest, _coincide, _local_dist, _newton, _point_on
 
 _INF = cython.declare(cython.double, math.inf)  # a C constant (``math.inf`` is a Python lookup)
+_NSMALL = cython.declare(cython.Py_ssize_t, 24)  # candidates and points held in the scratch buffer
+_NRES = cython.declare(cython.Py_ssize_t, 8)  # result rows made with it when the caller passes none
 
 
 @cython.cfunc
@@ -186,14 +197,26 @@ def intersect_pair_kernel(
         yhb = max(yhb, PB[i, 1])
     if xla > xhb + tol or xlb > xha + tol or yla > yhb + tol or ylb > yha + tol:
         return res, nres
-    # one allocation for the curves in the frame and all scratch arrays (each allocation costs
-    # about a microsecond): blocks of rows of a 6-column buffer, viewed as arrays of 1 to 6
-    # columns; an array that must grow is replaced by a larger copy (see _room)
+    # one allocation for the curves in the frame, all scratch arrays and the result rows (each
+    # allocation costs about half a microsecond): blocks of rows of a RES_COLS-column buffer,
+    # viewed as arrays of 1 to RES_COLS columns; an array that must grow is replaced by a larger
+    # copy (see _room). The last blocks: the points and roots of up to _NSMALL candidates (b5),
+    # _NSMALL rows of small vectors (cluster labels, kept flags, used ends, a box: one column
+    # each) and, when the caller passes no ``res``, _NRES result rows.
     n3 = 3 * ma + 3 * mb + 8
     n2 = 2 * ma + 2 * mb + 16
     n1 = 3 * ma + 3 * mb
     n4 = 88
-    scratch: cython.double[:, :] = np.empty((ma + mb + n3 + n2 + n1 + n4 + ma + mb, 6))
+    r6 = ma + mb + n3 + n2 + n1 + n4  # b6: ma + mb rows
+    r5 = r6 + ma + mb  # b5: 8 + 2 * _NSMALL + 4 rows
+    rv5 = r5 + 8 + 2 * _NSMALL + 4  # small vectors: _NSMALL rows
+    rres = rv5 + _NSMALL
+    buf = np.empty((rres + (_NRES if res is None else 0), RES_COLS))
+    scratch: cython.double[:, :] = buf
+    if res is None:
+        res = buf[rres:]
+        rv = res
+    vecs: cython.double[:, :] = scratch[rv5:rres]
     r0 = ma + mb
     HA: cython.double[:, :] = scratch[0:ma, 0:3]
     HB: cython.double[:, :] = scratch[ma:r0, 0:3]
@@ -201,7 +224,7 @@ def intersect_pair_kernel(
     b2: cython.double[:, :] = scratch[r0 + n3 : r0 + n3 + n2, 0:2]
     b1: cython.double[:] = scratch[r0 + n3 + n2 : r0 + n3 + n2 + n1, 0]
     b4: cython.double[:, :] = scratch[r0 + n3 + n2 + n1 : r0 + n3 + n2 + n1 + n4, 0:4]
-    b6: cython.double[:, :] = scratch[r0 + n3 + n2 + n1 + n4 :, :]
+    b6: cython.double[:, :] = scratch[r6:r5, 0:6]
     cx, cy, scale = _frame(PA, PB)
     _homog_into(PA, WA, cx, cy, scale, HA)
     _homog_into(PB, WB, cx, cy, scale, HB)
@@ -300,9 +323,9 @@ def intersect_pair_kernel(
     # ---------------------------------------------------------------- overlaps
     ov: cython.double[:, :] = b4[0:4]
     nov: cython.Py_ssize_t = 0
-    used: cython.uchar[:]
-    if nend >= 2:  # an allocation costs about a microsecond: only where there is a pair of ends
-        used = np.zeros(8, dtype=np.uint8)
+    used: cython.double[:] = vecs[0:8, 2]  # 1.0 for an end used by an overlap
+    for i in range(8):
+        used[i] = 0.0
     nsamp = max(24, na * nb + 4)
     for i in range(nend):
         for j in range(i + 1, nend):
@@ -320,8 +343,8 @@ def intersect_pair_kernel(
                 ov[nov, 2] = ends[p, 1]
                 ov[nov, 3] = ends[q, 1]
                 nov += 1
-                used[i] = True
-                used[j] = True
+                used[i] = 1.0
+                used[j] = 1.0
                 if nov == 4:
                     break
         if nov == 4:
@@ -347,7 +370,11 @@ def intersect_pair_kernel(
         max(PA[0, 1], PA[na, 1], PB[0, 1], PB[nb, 1]) - min(PA[0, 1], PA[na, 1], PB[0, 1], PB[nb, 1]),
     )
     if ext < 0.25:  # the end points span less than a quarter of the frame: sample the curves
-        box: cython.double[:] = np.array([_INF, -_INF, _INF, -_INF])
+        box: cython.double[:] = vecs[0:4, 3]
+        box[0] = _INF
+        box[1] = -_INF
+        box[2] = _INF
+        box[3] = -_INF
         _curve_box_update(PA, WA, box)
         _curve_box_update(PB, WB, box)
         ext = scale * hypot(box[1] - box[0], box[3] - box[2])
@@ -477,28 +504,37 @@ def intersect_pair_kernel(
         return res, nres  # nothing found (no ends, hence no overlaps): no cluster arrays to make
 
     # ---------------------------------------------------------------- clusters
-    label: cython.Py_ssize_t[:] = np.arange(ncand, dtype=np.intp)
+    # union-find labels, held as doubles (exact integers) in the scratch buffer
+    label: cython.double[:] = vecs[0:ncand, 0] if ncand <= _NSMALL else np.empty(ncand)
+    li: cython.Py_ssize_t
+    lj: cython.Py_ssize_t
+    for i in range(ncand):
+        label[i] = i
     for i in range(ncand):
         for j in range(i + 1, ncand):
             gt = max(cands[i, 0], cands[j, 0]) - min(cands[i, 1], cands[j, 1])
             gu = max(cands[i, 2], cands[j, 2]) - min(cands[i, 3], cands[j, 3])
             if gt <= 1e-7 and gu <= 1e-7:
-                li = label[i]
+                li = cython.cast(cython.Py_ssize_t, label[i])
                 while label[li] != li:
-                    li = label[li]
-                lj = label[j]
+                    li = cython.cast(cython.Py_ssize_t, label[li])
+                lj = cython.cast(cython.Py_ssize_t, label[j])
                 while label[lj] != lj:
-                    lj = label[lj]
+                    lj = cython.cast(cython.Py_ssize_t, label[lj])
                 if li != lj:
                     label[max(li, lj)] = min(li, lj)
     for i in range(ncand):
-        li = label[i]
+        li = cython.cast(cython.Py_ssize_t, label[i])
         while label[li] != li:
-            li = label[li]
+            li = cython.cast(cython.Py_ssize_t, label[li])
         label[i] = li
 
     # points found: (t, u, dist, kind, priority)
-    b5: cython.double[:, :] = np.empty((8 + ncand + ncand + 4, 5))  # pts, then roots (3 columns)
+    b5: cython.double[:, :]  # pts, then roots (3 columns)
+    if ncand <= _NSMALL:
+        b5 = scratch[r5 : r5 + 8 + ncand + ncand + 4, 0:5]
+    else:
+        b5 = np.empty((8 + ncand + ncand + 4, 5))
     pts: cython.double[:, :] = b5[0 : 8 + ncand]
     npts = 0
     for k in range(nend):
@@ -699,7 +735,9 @@ def intersect_pair_kernel(
             i = j + 1
 
     # ---------------------------------------------------------------- dedupe + emit
-    keep: cython.uchar[:] = np.ones(npts, dtype=np.uint8)
+    keep: cython.double[:] = vecs[0:npts, 1] if npts <= _NSMALL else np.empty(npts)  # 1.0: kept
+    for i in range(npts):
+        keep[i] = 1.0
     for i in range(npts):
         if not keep[i]:
             continue
@@ -749,12 +787,12 @@ def intersect_pair_kernel(
                 if pts[j, 4] > pts[i, 4]:
                     if pts[j, 3] < 0.0 and pts[i, 3] >= 0.0:
                         pts[j, 3] = pts[i, 3]
-                    keep[i] = False
+                    keep[i] = 0.0
                     break
                 else:
                     if pts[i, 3] < 0.0 and pts[j, 3] >= 0.0:
                         pts[i, 3] = pts[j, 3]
-                    keep[j] = False
+                    keep[j] = 0.0
     for i in range(npts):
         if not keep[i]:
             continue
