@@ -84,6 +84,7 @@ from ._kernels import (
     KIND_OVERLAP,
     KIND_TANGENT,
     KIND_UNRESOLVED,
+    ends_match,
     intersect_batch_kernel,
     intersect_one_kernel,
 )
@@ -114,34 +115,59 @@ __all__ = [
     "intersect_many",
 ]
 
-_KINDS: dict[int, Literal["crossing", "tangent"]] = {KIND_CROSSING: "crossing", KIND_TANGENT: "tangent"}
+
+
+_NEW = object.__new__
+_KIND_NAMES: tuple[Literal["crossing"], Literal["tangent"]] = ("crossing", "tangent")  # by kind code
 
 
 def _point(t: float, u: float, point: FloatArray, kind: Literal["crossing", "tangent"],
            distance: float) -> Intersection:
     """An :class:`Intersection` without the frozen-dataclass ``__init__`` cost (hot path)."""
-    obj = object.__new__(Intersection)
-    obj.__dict__.update(t=t, u=u, point=point, kind=kind, distance=distance)
+    obj = _NEW(Intersection)
+    d = obj.__dict__
+    d["t"] = t
+    d["u"] = u
+    d["point"] = point
+    d["kind"] = kind
+    d["distance"] = distance
     return obj
 
 
 def _rows_to_list(rows: FloatArray) -> IntersectionList:
-    """Build the sorted :class:`IntersectionList` of kernel result rows."""
-    if rows.shape[0] == 0:
+    """Build the sorted :class:`IntersectionList` of kernel result rows.
+
+    Rows are taken in the order of their ``t`` (column 2: a point's ``t``, an overlap's first
+    ``t``), a stable sort, so the list is what sorting the result objects by ``t`` would give.
+    """
+    n = rows.shape[0]
+    if n == 0:
         return IntersectionList()
     items: list[Result] = []
     boxes: list[ParameterBox] = []
     points = rows[:, 6:8].copy()
     points.flags.writeable = False
-    for i, r in enumerate(rows.tolist()):
+    lst = rows.tolist()
+    order: Iterable[int] = range(n)
+    if n > 1 and float(KIND_UNRESOLVED) not in [r[1] for r in lst]:  # boxes keep the kernel's order
+        order = sorted(order, key=[r[2] for r in lst].__getitem__)
+    for i in order:
+        r = lst[i]
         kind = int(r[1])
-        if kind == KIND_OVERLAP:
+        if kind == KIND_CROSSING or kind == KIND_TANGENT:
+            obj = _NEW(Intersection)  # _point, inlined: the hot loop of every call
+            d = obj.__dict__
+            d["t"] = r[2]
+            d["u"] = r[3]
+            d["point"] = points[i]
+            d["kind"] = _KIND_NAMES[kind]
+            d["distance"] = r[8]
+            items.append(obj)
+        elif kind == KIND_OVERLAP:
             items.append(Overlap(t=(r[2], r[4]), u=(r[3], r[5])))
-        elif kind == KIND_UNRESOLVED:
-            boxes.append(ParameterBox(r[2], r[4], r[3], r[5]))
         else:
-            items.append(_point(r[2], r[3], points[i], _KINDS[kind], r[8]))
-    if len(items) > 1:
+            boxes.append(ParameterBox(r[2], r[4], r[3], r[5]))
+    if boxes and len(items) > 1:
         items.sort(key=lambda x: x.t[0] if isinstance(x, Overlap) else x.t)
     return IntersectionList(items, boxes)
 
@@ -166,20 +192,14 @@ def _may_coincide(pa: FloatArray, pb: FloatArray, tol: float | None) -> bool:
     Such pairs go through :func:`intersect`, whose :func:`~relief_cad.contacts.whole_overlap` answers
     coincident curves before clipping (their slowest case). That needs both end points of ``pa``
     within ``tol`` of those of ``pb``, one way round or the other: checked here within ``2 tol`` (a
-    margin for the exact rescaling of huge coordinates there), on eight scalar reads (50 ns each),
-    so a pair that merely starts at the same x no longer pays for the test (25 us). ``tol`` None
-    (a batch with per-pair default tolerances, not yet known): the first x of ``pa`` equals an end
-    x of ``pb``.
+    margin for the exact rescaling of huge coordinates there), by the compiled test that
+    :func:`intersect` runs in its kernel call. ``tol`` None (a batch with per-pair default
+    tolerances, not yet known): the first x of ``pa`` equals an end x of ``pb``.
     """
-    ax0 = pa.item(0)
     if tol is None:
+        ax0 = pa.item(0)
         return ax0 == pb.item(0) or ax0 == pb.item(-2)
-    lim = 2.0 * tol
-    ay0, ax1, ay1 = pa.item(1), pa.item(-2), pa.item(-1)
-    bx0, by0, bx1, by1 = pb.item(0), pb.item(1), pb.item(-2), pb.item(-1)
-    if abs(ax0 - bx0) <= lim and abs(ay0 - by0) <= lim and abs(ax1 - bx1) <= lim and abs(ay1 - by1) <= lim:
-        return True
-    return abs(ax0 - bx1) <= lim and abs(ay0 - by1) <= lim and abs(ax1 - bx0) <= lim and abs(ay1 - by0) <= lim
+    return ends_match(pa, pb, 2.0 * tol)
 
 
 def _refined(a: RationalBezier, b: RationalBezier, res: IntersectionList, tol: float) -> IntersectionList:
@@ -364,12 +384,17 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
     # _sampled_tolerance is its compiled default for two curves)
     ftol = (_sampled_tolerance((a, b)) if tol is None else None) or resolve_tolerance(check_tol(tol), a, b)
     pb = b.control_points
-    # the first x decides for almost every pair (a scalar read costs 50 ns)
-    whole = whole_overlap(a, b, ftol) if _may_coincide(pa, pb, ftol) else None
-    if whole is not None:  # coincident curves: the clipping's slowest case, decided by geometry
-        return IntersectionList([whole], tol_used=ftol)
-    # a RationalBezier's arrays are float64: the kernel takes them as they are (strided views too)
-    res = _with_tol(_rows_to_list(intersect_one_kernel(pa, a.weights, pb, b.weights, ftol, nbudget)), ftol)
+    # a RationalBezier's arrays are float64: the kernel takes them as they are (strided views too).
+    # Curves whose end points match within 2 tol (a margin for the exact rescaling of huge
+    # coordinates there) may coincide all along, the clipping's slowest case: the kernel returns
+    # None for them, and whole_overlap decides by geometry first
+    rows = intersect_one_kernel(pa, a.weights, pb, b.weights, ftol, nbudget, 2.0 * ftol)
+    if rows is None:
+        whole = whole_overlap(a, b, ftol)
+        if whole is not None:
+            return IntersectionList([whole], tol_used=ftol)
+        rows = intersect_one_kernel(pa, a.weights, pb, b.weights, ftol, nbudget)
+    res = _with_tol(_rows_to_list(rows), ftol)
     if not res and not res.unresolved:
         return res
     return finish(_with_tol(_refined(a, b, res, ftol), ftol), on_budget)
@@ -467,7 +492,7 @@ def _collect(res: FloatArray, points: FloatArray, out_items: list[list[Result]],
         j = int(r[0])
         kind = int(r[1])
         if kind == KIND_CROSSING or kind == KIND_TANGENT:
-            out_items[j].append(_point(r[2], r[3], points[i], _KINDS[kind], r[8]))
+            out_items[j].append(_point(r[2], r[3], points[i], _KIND_NAMES[kind], r[8]))
         elif kind == KIND_OVERLAP:
             out_items[j].append(Overlap(t=(r[2], r[4]), u=(r[3], r[5])))
         else:

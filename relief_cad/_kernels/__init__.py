@@ -55,6 +55,7 @@ __all__ = [
     "STATUS_ARTEFACT",
     "STATUS_OK",
     "clip_range_kernel",
+    "ends_match",
     "fat_line_kernel",
     "hull_range_kernel",
     "intersect_batch_kernel",
@@ -111,7 +112,7 @@ def _load() -> bool:
 COMPILED: bool = _load()
 """True when the compiled kernels run; False under ``RELIEF_CAD_PURE=1``."""
 
-from .batch import intersect_batch_kernel, intersect_one_kernel  # noqa: E402
+from .batch import ends_match, intersect_batch_kernel, intersect_one_kernel  # noqa: E402
 from .clip import clip_range_kernel, fat_line_kernel, hull_range_kernel  # noqa: E402
 from .constants import (  # noqa: E402
     KIND_CROSSING,

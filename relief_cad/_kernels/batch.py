@@ -100,6 +100,32 @@ def intersect_batch_kernel(
     return res[:nres]
 
 
+@cython.cfunc
+@cython.exceptval(check=False)
+def _ends_match(
+    PA: cython.const[cython.double][:, :], PB: cython.const[cython.double][:, :], lim: cython.double
+) -> cython.bint:
+    """True when both end points of ``PA`` lie within ``lim`` (per coordinate) of those of ``PB``.
+
+    Either way round: ``PA``'s first point near ``PB``'s first and its last near ``PB``'s last,
+    or first near last and last near first.
+    """
+    na: cython.Py_ssize_t = PA.shape[0] - 1
+    nb: cython.Py_ssize_t = PB.shape[0] - 1
+    ax0, ay0, ax1, ay1 = PA[0, 0], PA[0, 1], PA[na, 0], PA[na, 1]
+    bx0, by0, bx1, by1 = PB[0, 0], PB[0, 1], PB[nb, 0], PB[nb, 1]
+    if abs(ax0 - bx0) <= lim and abs(ay0 - by0) <= lim and abs(ax1 - bx1) <= lim and abs(ay1 - by1) <= lim:
+        return True
+    return abs(ax0 - bx1) <= lim and abs(ay0 - by1) <= lim and abs(ax1 - bx0) <= lim and abs(ay1 - by0) <= lim
+
+
+def ends_match(
+    PA: cython.const[cython.double][:, :], PB: cython.const[cython.double][:, :], lim: cython.double
+) -> bool:
+    """:func:`_ends_match` for Python callers."""
+    return _ends_match(PA, PB, lim)
+
+
 def intersect_one_kernel(
     PA: cython.const[cython.double][:, :],
     WA: cython.const[cython.double][:],
@@ -107,11 +133,16 @@ def intersect_one_kernel(
     WB: cython.const[cython.double][:],
     tol: cython.double,
     budget,
+    ends_lim: cython.double = -1.0,
 ):
     """One pair: the result rows (a single array return is cheaper to box than a tuple).
 
     A pair with no result (boxes apart, or nothing found) returns one shared read-only empty array.
+    With ``ends_lim >= 0``, a pair whose end points match within ``ends_lim`` (:func:`_ends_match`:
+    curves that may coincide all along, which the caller tests first) returns None, unsolved.
     """
+    if ends_lim >= 0.0 and _ends_match(PA, PB, ends_lim):
+        return None
     if _boxes_apart(PA, PB, tol):
         return _NO_ROWS
     # no ``res``: the pair kernel makes its result rows in its own scratch buffer (one allocation)
