@@ -1,2 +1,2 @@
-# pure-Python mode: the pair driver is called as a C function (see planar.pxd)
-from relief_cad._kernels.planar cimport intersect_pair_kernel
+# pure-Python mode: the pair driver and its helpers are called as C functions (see planar.pxd)
+from relief_cad._kernels.planar cimport _apart, _box, _pair_core, scratch_rows

@@ -13,29 +13,12 @@ import cython
 import numpy as np
 from cython.cimports.libc.math import fabs, sqrt
 
+from .bezier import _grow
 from .constants import RES_COLS
-from .planar import intersect_pair_kernel
+from .planar import _apart, _box, _pair_core, intersect_pair_kernel, scratch_rows
 
 _NO_ROWS = np.empty((0, RES_COLS))
 _NO_ROWS.flags.writeable = False
-
-
-@cython.cfunc
-@cython.nogil
-@cython.exceptval(check=False)
-def _box(
-    P: cython.const[cython.double][:, :]
-) -> tuple[cython.double, cython.double, cython.double, cython.double]:
-    """The control-point box ``(xlo, xhi, ylo, yhi)`` of planar points ``P``."""
-    i: cython.Py_ssize_t
-    xl = xh = P[0, 0]
-    yl = yh = P[0, 1]
-    for i in range(1, P.shape[0]):
-        xl = min(xl, P[i, 0])
-        xh = max(xh, P[i, 0])
-        yl = min(yl, P[i, 1])
-        yh = max(yh, P[i, 1])
-    return xl, xh, yl, yh
 
 
 @cython.cfunc
@@ -52,10 +35,10 @@ def _boxes_apart(
     their sampled extent is within that box (up to rounding, far below the factor 2). Only a pair
     that the pair kernel's own box test rejects can give True.
     """
-    axl, axh, ayl, ayh = _box(PA)
-    bxl, bxh, byl, byh = _box(PB)
     bound: cython.double = tol
     if not tol > 0.0:
+        axl, axh, ayl, ayh = _box(PA)
+        bxl, bxh, byl, byh = _box(PB)
         xl = min(axl, bxl)
         xh = max(axh, bxh)
         yl = min(ayl, byl)
@@ -63,7 +46,7 @@ def _boxes_apart(
         big = max(max(fabs(xl), fabs(xh)), max(fabs(yl), fabs(yh)))
         diag = sqrt((xh - xl) * (xh - xl) + (yh - yl) * (yh - yl))
         bound = 2.0 * (1e-9 * diag + 64.0 * 2.220446049250313e-16 * big)
-    return axl > bxh + bound or bxl > axh + bound or ayl > byh + bound or byl > ayh + bound
+    return _apart(PA, PB, bound)
 
 
 def intersect_batch_kernel(
@@ -72,32 +55,73 @@ def intersect_batch_kernel(
     offsets: cython.const[cython.longlong][:],
     pairs: cython.const[cython.longlong][:, :],
     tol: cython.const[cython.double][:],
-    budget,
+    budget: cython.longlong,
 ):
-    """Intersect many pairs in one call.
+    """Intersect many pairs in one call, without the GIL (other threads run meanwhile).
 
     ``P`` (N, 2) and ``W`` (N,) hold every curve's control points back to back;
     curve ``k`` is rows ``offsets[k]:offsets[k + 1]``. ``pairs`` (p, 2) indexes
     curves; ``tol`` (p,) holds each pair's tolerance. Returns the result rows.
+    One scratch buffer, made for the largest pair, serves every pair.
     """
-    res = np.empty((max(16, 2 * pairs.shape[0]), RES_COLS))
-    nres: cython.Py_ssize_t = 0
     k: cython.Py_ssize_t
+    m: cython.Py_ssize_t = 1
+    n: cython.Py_ssize_t = 0
+    nres: cython.Py_ssize_t = 0
+    npairs: cython.Py_ssize_t = pairs.shape[0]
+    for k in range(offsets.shape[0] - 1):
+        m = max(m, offsets[k + 1] - offsets[k])
+    scratch: cython.double[:, :] = np.empty((scratch_rows(m, m), RES_COLS))
+    res = np.empty((max(16, 2 * npairs), RES_COLS))
+    rv: cython.double[:, :] = res
+    k = 0
+    while k < npairs:
+        with cython.nogil:
+            k, n = _batch_run(P, W, offsets, pairs, tol, budget, scratch, rv, k, nres)
+        if n < 0:  # no room for pair k's rows: grow, and run it again (the same bits)
+            res = _grow(res, max(-2 - n, 2 * rv.shape[0]))
+            rv = res
+        else:
+            nres = n
+    return res[:nres]
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=True)  # an exception of a pair propagates (checked once per call, not per pair)
+def _batch_run(
+    P: cython.const[cython.double][:, :],
+    W: cython.const[cython.double][:],
+    offsets: cython.const[cython.longlong][:],
+    pairs: cython.const[cython.longlong][:, :],
+    tol: cython.const[cython.double][:],
+    budget: cython.longlong,
+    scratch: cython.double[:, :],
+    rv: cython.double[:, :],
+    k: cython.Py_ssize_t,
+    nres: cython.Py_ssize_t,
+) -> tuple[cython.Py_ssize_t, cython.Py_ssize_t]:
+    """Run pairs ``k, k + 1, ...`` into ``rv``, without the GIL; ``(k, nres)`` when they are done.
+
+    It stops early at the first pair whose rows do not fit (``nres`` is then :func:`_pair_core`'s
+    ``-2 - n``) or that raised (the exception propagates).
+    """
+    n: cython.Py_ssize_t
     PA: cython.const[cython.double][:, :]
     PB: cython.const[cython.double][:, :]
-    WA: cython.const[cython.double][:]
-    WB: cython.const[cython.double][:]
-    for k in range(pairs.shape[0]):
+    while k < pairs.shape[0]:
         ia = pairs[k, 0]
         ib = pairs[k, 1]
         PA = P[offsets[ia] : offsets[ia + 1]]
         PB = P[offsets[ib] : offsets[ib + 1]]
-        if _boxes_apart(PA, PB, tol[k]):
-            continue
-        WA = W[offsets[ia] : offsets[ia + 1]]
-        WB = W[offsets[ib] : offsets[ib + 1]]
-        res, nres = intersect_pair_kernel(PA, WA, PB, WB, tol[k], budget, k, res, nres)
-    return res[:nres]
+        if not _boxes_apart(PA, PB, tol[k]):
+            n = _pair_core(PA, W[offsets[ia] : offsets[ia + 1]], PB, W[offsets[ib] : offsets[ib + 1]],
+                           tol[k], budget, k, scratch, rv, nres)
+            if n < 0:
+                return k, n
+            nres = n
+        k += 1
+    return k, nres
 
 
 @cython.cfunc
@@ -145,6 +169,6 @@ def intersect_one_kernel(
         return None
     if _boxes_apart(PA, PB, tol):
         return _NO_ROWS
-    # no ``res``: the pair kernel makes its result rows in its own scratch buffer (one allocation)
+    # no ``res``: the pair kernel makes its result rows with its scratch buffer (one allocation)
     res, nres = intersect_pair_kernel(PA, WA, PB, WB, tol, budget, 0, None, 0)
     return res[:nres] if nres else _NO_ROWS

@@ -264,11 +264,34 @@ def _frame(PA: cython.const[cython.double][:, :], PB: cython.const[cython.double
         big = max(big, abs(PA[i, 0] - cx), abs(PA[i, 1] - cy))
     for i in range(PB.shape[0]):
         big = max(big, abs(PB[i, 0] - cx), abs(PB[i, 1] - cy))
-    scale: cython.double = 1.0
-    if big > 0.0:
-        e = max(math.frexp(big)[1], -1000)  # keep the scale finite for subnormal inputs
-        scale = math.ldexp(1.0, -e)
-    return cx, cy, scale
+    return cx, cy, _pow2_scale(big)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _pow2_scale(big: cython.double) -> cython.double:
+    """``2**-e`` with ``e = max(frexp(big)[1], -1000)`` (``2**(e - 1) <= big < 2**e``); else 1.0.
+
+    By exact doublings and halvings (libc's ``frexp`` needs a pointer, which pure-Python mode
+    has not): ``e`` stays above -1000 so that the scale is finite for subnormal inputs.
+    """
+    if not 0.0 < big < _INF:  # as frexp: e = 0 for 0, inf and nan
+        return 1.0
+    e: cython.int = 0
+    p: cython.double = 1.0  # 2**e
+    scale: cython.double = 1.0  # 2**-e
+    if big >= 1.0:
+        while big >= p:  # p = inf past 2**1023 ends it
+            p *= 2.0
+            scale *= 0.5
+            e += 1
+        return scale
+    while e > -1000 and big < 0.5 * p:
+        p *= 0.5
+        scale *= 2.0
+        e -= 1
+    return scale
 
 
 def _bbox_update(P: cython.const[cython.double][:, :], box: cython.double[:]):

@@ -16,6 +16,7 @@ from .bezier import _eval, _rounds
 
 
 @cython.cfunc
+@cython.nogil
 @cython.inline
 @cython.exceptval(check=False)
 def _two_sum(a: cython.double, b: cython.double) -> tuple[cython.double, cython.double]:
@@ -25,6 +26,7 @@ def _two_sum(a: cython.double, b: cython.double) -> tuple[cython.double, cython.
 
 
 @cython.cfunc
+@cython.nogil
 @cython.inline
 @cython.exceptval(check=False)
 def _two_prod(a: cython.double, b: cython.double) -> tuple[cython.double, cython.double]:
@@ -39,6 +41,7 @@ def _two_prod(a: cython.double, b: cython.double) -> tuple[cython.double, cython
 
 
 @cython.cfunc
+@cython.nogil
 @cython.inline
 @cython.exceptval(check=False)
 def _dd_add(
@@ -50,6 +53,7 @@ def _dd_add(
 
 
 @cython.cfunc
+@cython.nogil
 @cython.inline
 @cython.exceptval(check=False)
 def _dd_mul(
@@ -61,6 +65,7 @@ def _dd_mul(
 
 
 @cython.cfunc
+@cython.nogil
 @cython.inline
 @cython.exceptval(check=False)
 def _dd_div(
@@ -74,6 +79,7 @@ def _dd_div(
 
 
 @cython.cfunc
+@cython.nogil
 @cython.exceptval(check=False)
 def _eval_dd(
     H: cython.const[cython.double][:, :], t: cython.double, wk: cython.double[:, :]

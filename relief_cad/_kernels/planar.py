@@ -30,11 +30,20 @@ from .constants import (
 from .polish import _angle_sin, _closest, _coincide, _local_dist, _newton, _point_on
 
 _INF = cython.declare(cython.double, math.inf)  # a C constant (``math.inf`` is a Python lookup)
+# constants.py is plain Python (its names are Python objects): C copies for the loops
+_C_EPS = cython.declare(cython.double, _EPS)
+_C_ROUND = cython.declare(cython.double, _ROUND)
+_C_SPLIT_RATIO = cython.declare(cython.double, _SPLIT_RATIO)
+_K_CROSSING = cython.declare(cython.double, KIND_CROSSING)
+_K_TANGENT = cython.declare(cython.double, KIND_TANGENT)
+_K_OVERLAP = cython.declare(cython.double, KIND_OVERLAP)
+_K_UNRESOLVED = cython.declare(cython.double, KIND_UNRESOLVED)
 _NSMALL = cython.declare(cython.Py_ssize_t, 24)  # candidates and points held in the scratch buffer
-_NRES = cython.declare(cython.Py_ssize_t, 8)  # result rows made with it when the caller passes none
+_NRES = cython.declare(cython.Py_ssize_t, 64)  # result rows made with the scratch when res is None
 
 
 @cython.cfunc
+@cython.nogil
 @cython.exceptval(check=False)
 def _in_overlap(
     ov: cython.double[:, :],
@@ -58,6 +67,7 @@ def _in_overlap(
 
 
 @cython.cfunc
+@cython.nogil
 @cython.exceptval(check=False)
 def _two_roots(pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssize_t, rnd: cython.double,
                k_crossing: cython.double) -> cython.bint:
@@ -77,14 +87,17 @@ def _two_roots(pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssiz
 
 
 @cython.cfunc
+@cython.nogil
 def _room(a: cython.double[:, :], n: cython.Py_ssize_t) -> cython.double[:, :]:
-    """``a`` itself when it has at least ``n`` rows, else a larger copy (:func:`._grow`)."""
+    """``a`` itself when it has at least ``n`` rows, else a larger copy (:func:`._grow`, with the GIL)."""
     if n <= a.shape[0]:
         return a
-    return _grow(np.asarray(a), n)
+    with cython.gil:
+        return _grow(np.asarray(a), n)
 
 
 @cython.cfunc
+@cython.nogil
 @cython.exceptval(check=False)
 def _put(
     res: cython.double[:, :],
@@ -111,7 +124,41 @@ def _put(
     res[nres, 8] = dist
 
 
-def intersect_pair_kernel(
+def _box(
+    P: cython.const[cython.double][:, :]
+) -> tuple[cython.double, cython.double, cython.double, cython.double]:
+    """The control-point box ``(xlo, xhi, ylo, yhi)`` of planar points ``P``."""
+    i: cython.Py_ssize_t
+    xl = xh = P[0, 0]
+    yl = yh = P[0, 1]
+    for i in range(1, P.shape[0]):
+        xl = min(xl, P[i, 0])
+        xh = max(xh, P[i, 0])
+        yl = min(yl, P[i, 1])
+        yh = max(yh, P[i, 1])
+    return xl, xh, yl, yh
+
+
+def _apart(
+    PA: cython.const[cython.double][:, :], PB: cython.const[cython.double][:, :], tol: cython.double
+) -> cython.bint:
+    """True when the control-point boxes of two planar curves are more than ``tol`` apart."""
+    axl, axh, ayl, ayh = _box(PA)
+    bxl, bxh, byl, byh = _box(PB)
+    return axl > bxh + tol or bxl > axh + tol or ayl > byh + tol or byl > ayh + tol
+
+
+def scratch_rows(ma: cython.Py_ssize_t, mb: cython.Py_ssize_t) -> cython.Py_ssize_t:
+    """Rows of the scratch buffer of :func:`_pair_core` for curves of ``ma`` and ``mb`` control points.
+
+    Its blocks are laid out there; the count grows with ``ma + mb`` (a buffer made for the
+    largest pair of a batch serves every pair).
+    """
+    m: cython.Py_ssize_t = ma + mb
+    return m + (3 * m + 8) + (2 * m + 16) + 3 * m + 88 + m + (8 + 2 * _NSMALL + 4) + _NSMALL
+
+
+def _pair_core(
     PA: cython.const[cython.double][:, :],
     WA: cython.const[cython.double][:],
     PB: cython.const[cython.double][:, :],
@@ -119,15 +166,19 @@ def intersect_pair_kernel(
     tol: cython.double,
     budget: cython.longlong,
     pair: cython.double,
-    res,
+    scratch: cython.double[:, :],
+    rv: cython.double[:, :],
     nres: cython.Py_ssize_t,
-):
-    """Intersect two planar rational Bézier curves; append result rows to ``res``.
+) -> cython.Py_ssize_t:
+    """The pair driver, without the GIL: rows appended to ``rv`` from row ``nres``; the new row count.
 
-    Parameters are the Cartesian control points and weights of each curve, the
-    distance tolerance (model units, > 0, resolved by the caller), the iteration
-    budget, the pair index written in column 0, and the result array with its row
-    count. Returns ``(res, nres)``.
+    ``scratch`` has at least :func:`scratch_rows` rows of ``RES_COLS`` columns (its contents are
+    overwritten). When ``rv`` has no room for the rows, nothing is written and ``-2 - n`` is
+    returned, ``n`` the rows ``rv`` needs: the caller grows it and runs the pair again (the same
+    bits). -1 signals a Python exception (an allocation that failed).
+
+    Not one screen: the paper's clipping loop and the root classification share the scratch
+    views and their counters; split, each part would take a dozen of them as arguments.
     """
     i: cython.Py_ssize_t
     j: cython.Py_ssize_t
@@ -137,14 +188,12 @@ def intersect_pair_kernel(
     mb: cython.Py_ssize_t = PB.shape[0]
     na: cython.Py_ssize_t = ma - 1
     nb: cython.Py_ssize_t = mb - 1
-    # constants.py is plain Python (its names are Python objects): C copies for the loops
-    eps: cython.double = _EPS
-    split_ratio: cython.double = _SPLIT_RATIO
-    k_crossing: cython.double = KIND_CROSSING
-    k_tangent: cython.double = KIND_TANGENT
-    k_overlap: cython.double = KIND_OVERLAP
-    k_unresolved: cython.double = KIND_UNRESOLVED
-    rv: cython.double[:, :] = res  # the result rows (``res`` is re-wrapped when it grows)
+    eps: cython.double = _C_EPS
+    split_ratio: cython.double = _C_SPLIT_RATIO
+    k_crossing: cython.double = _K_CROSSING
+    k_tangent: cython.double = _K_TANGENT
+    k_overlap: cython.double = _K_OVERLAP
+    k_unresolved: cython.double = _K_UNRESOLVED
     # scratch views (slices of three buffers) and locals that type inference leaves as objects
     CA: cython.double[:, :]
     CB: cython.double[:, :]
@@ -180,43 +229,21 @@ def intersect_pair_kernel(
     perp: cython.bint
     wide: cython.bint
     distinct: cython.bint
-    # disjoint bounding boxes (widened by tol): nothing to do
-    xla = xha = PA[0, 0]
-    yla = yha = PA[0, 1]
-    for i in range(1, ma):
-        xla = min(xla, PA[i, 0])
-        xha = max(xha, PA[i, 0])
-        yla = min(yla, PA[i, 1])
-        yha = max(yha, PA[i, 1])
-    xlb = xhb = PB[0, 0]
-    ylb = yhb = PB[0, 1]
-    for i in range(1, mb):
-        xlb = min(xlb, PB[i, 0])
-        xhb = max(xhb, PB[i, 0])
-        ylb = min(ylb, PB[i, 1])
-        yhb = max(yhb, PB[i, 1])
-    if xla > xhb + tol or xlb > xha + tol or yla > yhb + tol or ylb > yha + tol:
-        return res, nres
-    # one allocation for the curves in the frame, all scratch arrays and the result rows (each
-    # allocation costs about half a microsecond): blocks of rows of a RES_COLS-column buffer,
-    # viewed as arrays of 1 to RES_COLS columns; an array that must grow is replaced by a larger
-    # copy (see _room). The last blocks: the points and roots of up to _NSMALL candidates (b5),
-    # _NSMALL rows of small vectors (cluster labels, kept flags, used ends, a box: one column
-    # each) and, when the caller passes no ``res``, _NRES result rows.
+    if _apart(PA, PB, tol):  # disjoint bounding boxes (widened by tol): nothing to do
+        return nres
+    # the curves in the frame and all scratch arrays are blocks of rows of ``scratch`` (one
+    # allocation by the caller; each costs about half a microsecond), viewed as arrays of 1 to
+    # RES_COLS columns; an array that must grow is replaced by a larger copy (see _room). The
+    # last blocks: the points and roots of up to _NSMALL candidates (b5), and _NSMALL rows of
+    # small vectors (cluster labels, kept flags, used ends, a box: one column each)
     n3 = 3 * ma + 3 * mb + 8
     n2 = 2 * ma + 2 * mb + 16
     n1 = 3 * ma + 3 * mb
     n4 = 88
     r6 = ma + mb + n3 + n2 + n1 + n4  # b6: ma + mb rows
     r5 = r6 + ma + mb  # b5: 8 + 2 * _NSMALL + 4 rows
-    rv5 = r5 + 8 + 2 * _NSMALL + 4  # small vectors: _NSMALL rows
-    rres = rv5 + _NSMALL
-    buf = np.empty((rres + (_NRES if res is None else 0), RES_COLS))
-    scratch: cython.double[:, :] = buf
-    if res is None:
-        res = buf[rres:]
-        rv = res
-    vecs: cython.double[:, :] = scratch[rv5:rres]
+    rv5 = r5 + 8 + 2 * _NSMALL + 4  # small vectors: _NSMALL rows, the last of scratch_rows(ma, mb)
+    vecs: cython.double[:, :] = scratch[rv5 : rv5 + _NSMALL]
     r0 = ma + mb
     HA: cython.double[:, :] = scratch[0:ma, 0:3]
     HB: cython.double[:, :] = scratch[ma:r0, 0:3]
@@ -234,8 +261,9 @@ def intersect_pair_kernel(
     inv = 1.0 / scale
     wa: cython.double[:, :] = b3[0:ma]
     wb: cython.double[:, :] = b3[ma : ma + mb]
-    rnd: cython.double = _ROUND * max(1.0, 1.0)  # frame is normalised to |x| < 1
+    rnd: cython.double = _C_ROUND * max(1.0, 1.0)  # frame is normalised to |x| < 1
 
+    # no Python object below: the rare allocations take the GIL back (``with cython.gil``, _room)
     # ---------------------------------------------------------------- end points
     # candidates (t, u, dist) from each end point's projection on the other curve;
     # an end point outside the other curve's two fat lines (widened by tol) is skipped
@@ -337,7 +365,9 @@ def intersect_pair_kernel(
                 p, q = i, j
             else:
                 p, q = j, i
-            if _coincide(HA, HB, ends[p, 0], ends[p, 1], ends[q, 0], ends[q, 1], tl, wa, wb, nsamp):
+            with cython.gil:  # it allocates
+                same = _coincide(HA, HB, ends[p, 0], ends[p, 1], ends[q, 0], ends[q, 1], tl, wa, wb, nsamp)
+            if same:
                 ov[nov, 0] = ends[p, 0]
                 ov[nov, 1] = ends[q, 0]
                 ov[nov, 2] = ends[p, 1]
@@ -375,8 +405,9 @@ def intersect_pair_kernel(
         box[1] = -_INF
         box[2] = _INF
         box[3] = -_INF
-        _curve_box_update(PA, WA, box)
-        _curve_box_update(PB, WB, box)
+        with cython.gil:  # it allocates
+            _curve_box_update(PA, WA, box)
+            _curve_box_update(PB, WB, box)
         ext = scale * hypot(box[1] - box[0], box[3] - box[2])
         if ext < 0.25:
             epsb = 4e-7 * ext
@@ -501,11 +532,16 @@ def intersect_pair_kernel(
                 nunres += 1
 
     if ncand == 0 and nend == 0 and nunres == 0:
-        return res, nres  # nothing found (no ends, hence no overlaps): no cluster arrays to make
+        return nres  # nothing found (no ends, hence no overlaps): no cluster arrays to make
 
     # ---------------------------------------------------------------- clusters
     # union-find labels, held as doubles (exact integers) in the scratch buffer
-    label: cython.double[:] = vecs[0:ncand, 0] if ncand <= _NSMALL else np.empty(ncand)
+    label: cython.double[:]
+    if ncand <= _NSMALL:
+        label = vecs[0:ncand, 0]
+    else:
+        with cython.gil:
+            label = np.empty(ncand)
     li: cython.Py_ssize_t
     lj: cython.Py_ssize_t
     for i in range(ncand):
@@ -534,7 +570,8 @@ def intersect_pair_kernel(
     if ncand <= _NSMALL:
         b5 = scratch[r5 : r5 + 8 + ncand + ncand + 4, 0:5]
     else:
-        b5 = np.empty((8 + ncand + ncand + 4, 5))
+        with cython.gil:
+            b5 = np.empty((8 + ncand + ncand + 4, 5))
     pts: cython.double[:, :] = b5[0 : 8 + ncand]
     npts = 0
     for k in range(nend):
@@ -735,7 +772,12 @@ def intersect_pair_kernel(
             i = j + 1
 
     # ---------------------------------------------------------------- dedupe + emit
-    keep: cython.double[:] = vecs[0:npts, 1] if npts <= _NSMALL else np.empty(npts)  # 1.0: kept
+    keep: cython.double[:]  # 1.0: kept
+    if npts <= _NSMALL:
+        keep = vecs[0:npts, 1]
+    else:
+        with cython.gil:
+            keep = np.empty(npts)
     for i in range(npts):
         keep[i] = 1.0
     for i in range(npts):
@@ -793,6 +835,8 @@ def intersect_pair_kernel(
                     if pts[i, 3] < 0.0 and pts[j, 3] >= 0.0:
                         pts[i, 3] = pts[j, 3]
                     keep[j] = 0.0
+    if nres + npts + nov + nunres > rv.shape[0]:
+        return -2 - (nres + npts + nov + nunres)  # no room: the caller grows rv, runs again
     for i in range(npts):
         if not keep[i]:
             continue
@@ -816,21 +860,50 @@ def intersect_pair_kernel(
         dist = hypot(ax - bx, ay - by) * inv
         px = 0.5 * (ax + bx) * inv + cx
         py = 0.5 * (ay + by) * inv + cy
-        if nres >= rv.shape[0]:
-            res = _grow(res, nres + 1)
-            rv = res
         _put(rv, nres, pair, kf, t, u, t, u, px, py, dist)
         nres += 1
     for k in range(nov):
-        if nres >= rv.shape[0]:
-            res = _grow(res, nres + 1)
-            rv = res
         _put(rv, nres, pair, k_overlap, ov[k, 0], ov[k, 2], ov[k, 1], ov[k, 3], 0.0, 0.0, 0.0)
         nres += 1
     for k in range(nunres):
-        if nres >= rv.shape[0]:
-            res = _grow(res, nres + 1)
-            rv = res
         _put(rv, nres, pair, k_unresolved, unres[k, 0], unres[k, 2], unres[k, 1], unres[k, 3], 0.0, 0.0, 0.0)
         nres += 1
-    return res, nres
+    return nres
+
+
+def intersect_pair_kernel(
+    PA: cython.const[cython.double][:, :],
+    WA: cython.const[cython.double][:],
+    PB: cython.const[cython.double][:, :],
+    WB: cython.const[cython.double][:],
+    tol: cython.double,
+    budget: cython.longlong,
+    pair: cython.double,
+    res,
+    nres: cython.Py_ssize_t,
+):
+    """Intersect two planar rational Bézier curves; append result rows to ``res``.
+
+    Parameters are the Cartesian control points and weights of each curve, the distance
+    tolerance (model units, > 0, resolved by the caller), the iteration budget, the pair index
+    written in column 0, and the result array (or None: made here) with its row count. Returns
+    ``(res, nres)``. The work runs without the GIL (:func:`_pair_core`).
+    """
+    if _apart(PA, PB, tol):
+        return res, nres
+    rows = scratch_rows(PA.shape[0], PB.shape[0])
+    # one allocation (about half a microsecond each): the scratch rows, and the result rows
+    # when the caller has none
+    buf = np.empty((rows + (_NRES if res is None else 0), RES_COLS))
+    if res is None:
+        res = buf[rows:]
+    scratch: cython.double[:, :] = buf
+    rv: cython.double[:, :] = res
+    n: cython.Py_ssize_t
+    while True:
+        with cython.nogil:
+            n = _pair_core(PA, WA, PB, WB, tol, budget, pair, scratch, rv, nres)
+        if n >= 0:
+            return res, n
+        res = _grow(res, -2 - n)  # no room for the rows: grow and run again (the same bits)
+        rv = res

@@ -368,6 +368,7 @@ def _coincide(
 
 
 @cython.cfunc
+@cython.nogil
 @cython.exceptval(check=False)
 def _clip01(x: cython.double) -> cython.double:
     """``np.clip(x, 0.0, 1.0)`` for one float: NaN stays NaN, and its max-then-min order."""
