@@ -42,6 +42,8 @@ from typing import Literal
 import numpy as np
 from numpy.polynomial import polynomial as P
 
+from ._kernels.batch import ends_match
+from ._kernels.bezier import max_abs
 from ._kernels.certify import fold_bisect
 from ._kernels.polish import foot_newton, foot_seeds, surely_far
 from ._types import FloatArray
@@ -369,7 +371,7 @@ def range_exponent(big: float) -> int:
 
 
 def _exponent_of(*curves: RationalBezier) -> int:
-    return range_exponent(max(float(np.max(np.abs(c.control_points))) for c in curves))
+    return range_exponent(max(max_abs(c.control_points, 3) for c in curves))
 
 
 def _scaled(c: RationalBezier, exp: int) -> RationalBezier:
@@ -723,16 +725,10 @@ def _ends_may_match(pa: FloatArray, pb: FloatArray, lim: float) -> bool:
     """True when the ends of ``pa`` are within ``lim`` of those of ``pb`` (per coordinate), either way round.
 
     The cheap gate of :func:`whole_overlap` (called with ``lim = 2 tol``: a margin for its exact
-    rescaling of huge coordinates); curves of different dimensions never match.
+    rescaling of huge coordinates); curves of different dimensions never match. Compiled
+    (:func:`relief_cad._kernels.batch.ends_match`, the test the planar kernel runs itself).
     """
-    if pa.shape[1] != pb.shape[1]:
-        return False
-    a0, a1, b0, b1 = pa[0].tolist(), pa[-1].tolist(), pb[0].tolist(), pb[-1].tolist()
-
-    def near(p: list[float], q: list[float]) -> bool:
-        return all(abs(x - y) <= lim for x, y in zip(p, q, strict=True))
-
-    return (near(a0, b0) and near(a1, b1)) or (near(a0, b1) and near(a1, b0))
+    return bool(ends_match(pa, pb, lim))
 
 
 def _exact_copy(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap | None:

@@ -54,6 +54,7 @@ from ._kernels import (
     intersect_one_kernel,
     space_pair_kernel,
 )
+from ._kernels.bezier import max_abs
 from ._types import FloatArray
 from .contacts import needs_refining, range_exponent, refine_contacts, refine_self, whole_overlap
 from .curves import RationalBezier
@@ -136,7 +137,7 @@ def _first_frame(points: FloatArray) -> ReliefFrame:
     Out of the safe range (:func:`relief_cad.contacts.range_exponent`) the points are scaled by a
     power of two first, exactly as :func:`_pair` scales them for the kernel.
     """
-    exp = range_exponent(float(np.max(np.abs(points))))
+    exp = range_exponent(max_abs(points, 3))
     ref = np.ldexp(points[0], -exp)
     local = np.ascontiguousarray(np.ldexp(points, -exp) - ref)
     m = np.empty((4, 4))
@@ -235,7 +236,7 @@ def _pair(ha: FloatArray, hb: FloatArray, tol: float, budget: int) -> FloatArray
     Out of the safe range of :data:`relief_cad.contacts.SAFE_EXPONENT` the kernel's Gauss-Newton
     step (products of squared derivatives) would overflow.
     """
-    exp = range_exponent(max(float(np.max(np.abs(ha[:, :3]))), float(np.max(np.abs(hb[:, :3])))))
+    exp = range_exponent(max(max_abs(ha, 3), max_abs(hb, 3)))
     if not exp:
         return _pair_in_range(ha, hb, tol, budget)
     ha = ha.copy()

@@ -132,21 +132,32 @@ def _ends_match(
     """True when both end points of ``PA`` lie within ``lim`` (per coordinate) of those of ``PB``.
 
     Either way round: ``PA``'s first point near ``PB``'s first and its last near ``PB``'s last,
-    or first near last and last near first.
+    or first near last and last near first. Points of different dimensions never match.
     """
+    if PA.shape[1] != PB.shape[1]:
+        return False
     na: cython.Py_ssize_t = PA.shape[0] - 1
     nb: cython.Py_ssize_t = PB.shape[0] - 1
-    ax0, ay0, ax1, ay1 = PA[0, 0], PA[0, 1], PA[na, 0], PA[na, 1]
-    bx0, by0, bx1, by1 = PB[0, 0], PB[0, 1], PB[nb, 0], PB[nb, 1]
-    if abs(ax0 - bx0) <= lim and abs(ay0 - by0) <= lim and abs(ax1 - bx1) <= lim and abs(ay1 - by1) <= lim:
-        return True
-    return abs(ax0 - bx1) <= lim and abs(ay0 - by1) <= lim and abs(ax1 - bx0) <= lim and abs(ay1 - by0) <= lim
+    return (_near(PA, 0, PB, 0, lim) and _near(PA, na, PB, nb, lim)) or (
+        _near(PA, 0, PB, nb, lim) and _near(PA, na, PB, 0, lim))
+
+
+@cython.cfunc
+@cython.exceptval(check=False)
+def _near(P: cython.const[cython.double][:, :], i: cython.Py_ssize_t, Q: cython.const[cython.double][:, :],
+          j: cython.Py_ssize_t, lim: cython.double) -> cython.bint:
+    """True when row ``i`` of ``P`` and row ``j`` of ``Q`` differ by at most ``lim`` in every coordinate."""
+    c: cython.Py_ssize_t
+    for c in range(P.shape[1]):
+        if not abs(P[i, c] - Q[j, c]) <= lim:
+            return False
+    return True
 
 
 def ends_match(
     PA: cython.const[cython.double][:, :], PB: cython.const[cython.double][:, :], lim: cython.double
 ) -> bool:
-    """:func:`_ends_match` for Python callers."""
+    """:func:`_ends_match` for Python callers (control points of any one dimension)."""
     return _ends_match(PA, PB, lim)
 
 

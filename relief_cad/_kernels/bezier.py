@@ -294,6 +294,22 @@ def _pow2_scale(big: cython.double) -> cython.double:
     return scale
 
 
+def max_abs(P: cython.const[cython.double][:, :], ncols: cython.Py_ssize_t) -> cython.double:
+    """The largest ``|P[i, c]|`` over the rows and the first ``ncols`` columns of ``P`` (0.0 if empty).
+
+    >>> import numpy as np
+    >>> max_abs(np.array([[1.0, -3.0, 9.0], [2.0, 0.5, 1.0]]), 2)
+    3.0
+    """
+    i: cython.Py_ssize_t
+    c: cython.Py_ssize_t
+    big: cython.double = 0.0
+    for i in range(P.shape[0]):
+        for c in range(min(ncols, P.shape[1])):
+            big = max(big, abs(P[i, c]))
+    return big
+
+
 def _bbox_update(P: cython.const[cython.double][:, :], box: cython.double[:]):
     """Grow ``box = [xlo, xhi, ylo, yhi, max|coord|]`` by the points ``P``."""
     for i in range(P.shape[0]):
