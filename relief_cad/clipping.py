@@ -39,7 +39,7 @@ from ._kernels import (
 from ._types import FloatArray
 from .curves import RationalBezier
 from .errors import InvalidInputError, NonFiniteError, ShapeError, WeightError
-from .tolerances import resolve_tolerance
+from .tolerances import _default_tolerances, resolve_tolerance
 
 __all__ = [
     "RESULT_COLUMNS",
@@ -247,7 +247,11 @@ def intersect_packed(points: FloatArray, weights: FloatArray, offsets: FloatArra
 
 def _pair_tolerances(p: FloatArray, w: FloatArray, off: NDArray[np.int64], pairs: NDArray[np.int64],
                      tol: float | None) -> FloatArray:
-    """Each pair's :func:`~relief_cad.tolerances.resolve_tolerance` (curves built once each)."""
+    """Each pair's :func:`~relief_cad.tolerances.resolve_tolerance` (curves built once each, when needed).
+
+    The default (``tol`` None) is computed on the packed arrays in one compiled call; its
+    homogeneous rows are those a :class:`~relief_cad.RationalBezier` makes (``p * w``, then ``w``).
+    """
     curves: dict[int, RationalBezier] = {}
 
     def curve(k: int) -> RationalBezier:
@@ -255,4 +259,10 @@ def _pair_tolerances(p: FloatArray, w: FloatArray, off: NDArray[np.int64], pairs
             curves[k] = RationalBezier(p[off[k]:off[k + 1]], w[off[k]:off[k + 1]])
         return curves[k]
 
+    if tol is None:
+        H = np.empty((p.shape[0], 3))
+        with np.errstate(over="ignore", invalid="ignore"):  # an overflow: that pair's curve raises
+            H[:, :2] = p * w[:, None]
+        H[:, 2] = w
+        return _default_tolerances(curve, H, p, off, pairs)
     return np.array([resolve_tolerance(tol, curve(i), curve(j)) for i, j in pairs.tolist()])

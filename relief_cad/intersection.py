@@ -602,7 +602,9 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
         pts.flags.writeable = False
         wts.flags.writeable = False
         idx = np.arange(2 * len(planar), dtype=np.int64).reshape(-1, 2)
-        tols = (_default_tolerances([c for k in planar for c in plist[k]], pts, offsets, idx)
+        curves = [c for k in planar for c in plist[k]]
+        tols = (_default_tolerances(curves.__getitem__, np.concatenate([c.homogeneous for c in curves]), pts,
+                                    offsets, idx)
                 if ftol is None else np.array([resolve_tolerance(ftol, *plist[k]) for k in planar]))
         res = _batch_rows(pts, wts, offsets, idx, tols, nbudget, nworkers)
         out_items: list[list[Result]] = [[] for _ in planar]

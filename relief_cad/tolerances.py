@@ -25,7 +25,7 @@ overflow it.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, Union, cast
 
 import numpy as np
@@ -162,19 +162,19 @@ def _sampled_tolerance(curves: tuple[RationalBezier, ...]) -> float | None:
     return tol
 
 
-def _default_tolerances(curves: list[RationalBezier], P: FloatArray, offsets: NDArray[np.int64],
-                        pairs: NDArray[np.int64]) -> FloatArray:
-    """:func:`default_tolerance` of each pair of planar ``curves`` (``pairs``: (p, 2) indexes), at once.
+def _default_tolerances(curve: Callable[[int], RationalBezier], H: FloatArray, P: FloatArray,
+                        offsets: NDArray[np.int64], pairs: NDArray[np.int64]) -> FloatArray:
+    """:func:`default_tolerance` of each pair of packed planar curves (``pairs``: (p, 2) indexes), at once.
 
-    ``P`` and ``offsets`` are the curves' control points packed as the batch kernel takes them. The
-    same values as :func:`_sampled_tolerance` pair by pair (the batch's hot path: no Python per
-    pair); a pair with a degenerate sample gets the general path.
+    ``H`` (homogeneous rows), ``P`` (control points) and ``offsets`` hold the curves packed as the
+    batch kernel takes them (curve ``k`` is rows ``offsets[k]:offsets[k + 1]``). The same values as
+    :func:`_sampled_tolerance` pair by pair (the batch's hot path: no Python per pair); a pair with
+    a degenerate sample gets the general path, on the curves ``curve(k)`` gives.
     """
-    H = np.concatenate([c.homogeneous for c in curves])
     tols: FloatArray = pair_tolerances(H, P, offsets, pairs, _table(), _SAMPLES, RELATIVE_TOLERANCE,
                                        ROUNDING_ULPS * _EPS)
     for k in np.flatnonzero(np.isnan(tols)).tolist():
-        tols[k] = default_tolerance(curves[int(pairs[k, 0])], curves[int(pairs[k, 1])])
+        tols[k] = default_tolerance(curve(int(pairs[k, 0])), curve(int(pairs[k, 1])))
     return tols
 
 
