@@ -101,7 +101,7 @@ from .pieces import monotone_pieces
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
 from .space import intersect_space
 from .tolerances import (
-    _default_tolerances,
+    _pairs_default_tolerances,
     _sampled_tolerance,
     default_tolerance,
     resolve_tolerance,
@@ -602,9 +602,7 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
         pts.flags.writeable = False
         wts.flags.writeable = False
         idx = np.arange(2 * len(planar), dtype=np.int64).reshape(-1, 2)
-        curves = [c for k in planar for c in plist[k]]
-        tols = (_default_tolerances(curves.__getitem__, np.concatenate([c.homogeneous for c in curves]), pts,
-                                    offsets, idx)
+        tols = (_pairs_default_tolerances([plist[k] for k in planar])
                 if ftol is None else np.array([resolve_tolerance(ftol, *plist[k]) for k in planar]))
         res = _batch_rows(pts, wts, offsets, idx, tols, nbudget, nworkers)
         out_items: list[list[Result]] = [[] for _ in planar]

@@ -31,7 +31,7 @@ from typing import TYPE_CHECKING, Union, cast
 import numpy as np
 from numpy.typing import NDArray
 
-from ._kernels.bezier import pair_tolerances, sampled_tolerance
+from ._kernels.bezier import pair_tolerances, pairs_tolerances, sampled_tolerance
 from ._types import FloatArray
 
 if TYPE_CHECKING:
@@ -160,6 +160,18 @@ def _sampled_tolerance(curves: tuple[RationalBezier, ...]) -> float | None:
     tol: float | None = sampled_tolerance(curves, _params(), _SAMPLES, RELATIVE_TOLERANCE,
                                           ROUNDING_ULPS * _EPS)
     return tol
+
+
+def _pairs_default_tolerances(pairs: list[tuple[RationalBezier, RationalBezier]]) -> FloatArray:
+    """:func:`default_tolerance` of each pair of curves, in one compiled call.
+
+    The values of :func:`_sampled_tolerance`, each curve sampled once and its box cached; a pair
+    with a degenerate sample gets the general path.
+    """
+    tols: FloatArray = pairs_tolerances(pairs, _params(), _SAMPLES, RELATIVE_TOLERANCE, ROUNDING_ULPS * _EPS)
+    for k in np.flatnonzero(np.isnan(tols)).tolist():
+        tols[k] = default_tolerance(*pairs[k])
+    return tols
 
 
 def _default_tolerances(curve: Callable[[int], RationalBezier], H: FloatArray, P: FloatArray,

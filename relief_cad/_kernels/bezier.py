@@ -519,6 +519,30 @@ def sampled_tolerance(curves: tuple, params: list, samples: cython.Py_ssize_t, r
     a second call on the same curve does not sample it again. The boxes' union is exact (minima
     and maxima), so the value does not depend on that cache.
     """
+    tol = _cached_tolerance(curves, params, samples, rel, ulps)
+    return None if tol < 0.0 else tol
+
+
+def pairs_tolerances(pairs: list, params: list, samples: cython.Py_ssize_t, rel: cython.double,
+                     ulps: cython.double):
+    """:func:`sampled_tolerance` of each ``(a, b)`` tuple of ``pairs``: an array, NaN where None.
+
+    One call for a batch (the per-curve boxes are cached as in :func:`sampled_tolerance`).
+    """
+    k: cython.Py_ssize_t
+    out = np.empty(len(pairs))
+    o: cython.double[:] = out
+    for k in range(len(pairs)):
+        o[k] = _cached_tolerance(pairs[k], params, samples, rel, ulps)
+        if o[k] < 0.0:
+            o[k] = math.nan
+    return out
+
+
+@cython.cfunc
+def _cached_tolerance(curves: tuple, params: list, samples: cython.Py_ssize_t, rel: cython.double,
+                      ulps: cython.double) -> cython.double:
+    """:func:`sampled_tolerance`'s value, or -1.0 for None."""
     lo0: cython.double = _INF
     lo1: cython.double = _INF
     lo2: cython.double = _INF
@@ -541,14 +565,13 @@ def sampled_tolerance(curves: tuple, params: list, samples: cython.Py_ssize_t, r
             box = _sample_box(curve, params, samples)
             curve._sbox = box
         if box is False:
-            return None
+            return -1.0
         x0, x1, x2, y0, y1, y2, b, d = box
         lo0, lo1, lo2 = min(lo0, x0), min(lo1, x1), min(lo2, x2)
         hi0, hi1, hi2 = max(hi0, y0), max(hi1, y1), max(hi2, y2)
         big = max(big, b)
         dim = max(dim, d)
-    tol = _rule3(lo0, lo1, lo2, hi0, hi1, hi2, dim, big, rel, ulps)
-    return None if tol < 0.0 else tol
+    return _rule3(lo0, lo1, lo2, hi0, hi1, hi2, dim, big, rel, ulps)
 
 
 def pair_tolerances(
