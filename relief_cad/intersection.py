@@ -121,55 +121,68 @@ _NEW = object.__new__
 _KIND_NAMES: tuple[Literal["crossing"], Literal["tangent"]] = ("crossing", "tangent")  # by kind code
 
 
-def _point(t: float, u: float, point: FloatArray, kind: Literal["crossing", "tangent"],
-           distance: float) -> Intersection:
-    """An :class:`Intersection` without the frozen-dataclass ``__init__`` cost (hot path)."""
-    obj = _NEW(Intersection)
-    d = obj.__dict__
-    d["t"] = t
-    d["u"] = u
-    d["point"] = point
-    d["kind"] = kind
-    d["distance"] = distance
-    return obj
+def _distribute(rows: FloatArray, order: Iterable[int], items: list[list[Result]],
+                boxes: list[list[ParameterBox]]) -> None:
+    """Append the result object of each kernel row, in ``order``, to its pair's list (column 0).
 
-
-def _rows_to_list(rows: FloatArray) -> IntersectionList:
-    """Build the sorted :class:`IntersectionList` of kernel result rows.
-
-    Rows are taken in the order of their ``t`` (column 2: a point's ``t``, an overlap's first
-    ``t``), a stable sort, so the list is what sorting the result objects by ``t`` would give.
+    The one place where rows become :class:`Intersection`, :class:`Overlap` and
+    :class:`ParameterBox` objects; points are built without the frozen-dataclass ``__init__`` cost
+    (the hot loop of every call), their coordinates read-only rows of one copied array.
     """
-    n = rows.shape[0]
-    if n == 0:
-        return IntersectionList()
-    items: list[Result] = []
-    boxes: list[ParameterBox] = []
     points = rows[:, 6:8].copy()
     points.flags.writeable = False
     lst = rows.tolist()
-    order: Iterable[int] = range(n)
-    if n > 1 and float(KIND_UNRESOLVED) not in [r[1] for r in lst]:  # boxes keep the kernel's order
-        order = sorted(order, key=[r[2] for r in lst].__getitem__)
+    new = _NEW
     for i in order:
         r = lst[i]
         kind = int(r[1])
         if kind == KIND_CROSSING or kind == KIND_TANGENT:
-            obj = _NEW(Intersection)  # _point, inlined: the hot loop of every call
+            obj = new(Intersection)
             d = obj.__dict__
             d["t"] = r[2]
             d["u"] = r[3]
             d["point"] = points[i]
             d["kind"] = _KIND_NAMES[kind]
             d["distance"] = r[8]
-            items.append(obj)
+            items[int(r[0])].append(obj)
         elif kind == KIND_OVERLAP:
-            items.append(Overlap(t=(r[2], r[4]), u=(r[3], r[5])))
+            items[int(r[0])].append(Overlap(t=(r[2], r[4]), u=(r[3], r[5])))
         else:
-            boxes.append(ParameterBox(r[2], r[4], r[3], r[5]))
-    if boxes and len(items) > 1:
-        items.sort(key=lambda x: x.t[0] if isinstance(x, Overlap) else x.t)
+            boxes[int(r[0])].append(ParameterBox(r[2], r[4], r[3], r[5]))
+
+
+def _rows_to_list(rows: FloatArray) -> IntersectionList:
+    """Build the sorted :class:`IntersectionList` of one pair's kernel result rows.
+
+    Rows are taken in the order of their ``t`` (column 2: a point's ``t``, an overlap's first
+    ``t``), a stable sort, so the list is what sorting the result objects by ``t`` would give;
+    unresolved boxes keep the kernel's order.
+    """
+    n = rows.shape[0]
+    if n == 0:
+        return IntersectionList()
+    items: list[Result] = []
+    boxes: list[ParameterBox] = []
+    order: Iterable[int] = range(n)
+    if n > 1:
+        col = rows[:, 2].tolist()
+        kinds = rows[:, 1].tolist()
+        if float(KIND_UNRESOLVED) in kinds:  # a box's key is its row: the kernel's order
+            col = [i if k == KIND_UNRESOLVED else c for i, (k, c) in enumerate(zip(kinds, col, strict=True))]
+        order = sorted(order, key=col.__getitem__)
+    _distribute(rows, order, [items], [boxes])
     return IntersectionList(items, boxes)
+
+
+def _batch_order(rows: FloatArray) -> list[int]:
+    """Kernel rows of a batch ordered by pair, then by ``t``, unresolved boxes last in kernel order.
+
+    A stable sort (the order of Python's sort of each pair's objects by ``t``).
+    """
+    is_box = rows[:, 1] == KIND_UNRESOLVED
+    key = np.where(is_box, np.arange(rows.shape[0], dtype=np.float64), rows[:, 2])
+    order: list[int] = np.lexsort((key, is_box, rows[:, 0])).tolist()
+    return order
 
 
 def _ro(arr: FloatArray) -> FloatArray:
@@ -485,20 +498,6 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     return finish(IntersectionList(items, res.unresolved, ftol), on_budget)
 
 
-def _collect(res: FloatArray, points: FloatArray, out_items: list[list[Result]],
-             out_boxes: list[list[ParameterBox]]) -> None:
-    """Distribute batch kernel rows (column 0 = pair index) into per-pair result lists."""
-    for i, r in enumerate(res.tolist()):
-        j = int(r[0])
-        kind = int(r[1])
-        if kind == KIND_CROSSING or kind == KIND_TANGENT:
-            out_items[j].append(_point(r[2], r[3], points[i], _KIND_NAMES[kind], r[8]))
-        elif kind == KIND_OVERLAP:
-            out_items[j].append(Overlap(t=(r[2], r[4]), u=(r[3], r[5])))
-        else:
-            out_boxes[j].append(ParameterBox(r[2], r[4], r[3], r[5]))
-
-
 def _batch_rows(pts: FloatArray, wts: FloatArray, offsets: NDArray[np.int64], idx: NDArray[np.int64],
                 tols: FloatArray, budget: int, workers: int) -> FloatArray:
     """The batch kernel's rows for every pair of ``idx``, run in chunks on ``workers`` threads.
@@ -607,22 +606,19 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
         res = _batch_rows(pts, wts, offsets, idx, tols, nbudget, nworkers)
         out_items: list[list[Result]] = [[] for _ in planar]
         out_boxes: list[list[ParameterBox]] = [[] for _ in planar]
-        points = res[:, 6:8].copy()
-        points.flags.writeable = False
         # many small objects at once: keep the cyclic GC from rescanning them repeatedly
         gc_enabled = gc.isenabled()
         gc.disable()
         try:
-            _collect(res, points, out_items, out_boxes)
+            _distribute(res, _batch_order(res), out_items, out_boxes)
         finally:
             if gc_enabled:
                 gc.enable()
-        for j, k in enumerate(planar):
-            items = out_items[j]
-            if len(items) > 1:
-                items.sort(key=lambda x: x.t[0] if isinstance(x, Overlap) else x.t)
-            boxes = out_boxes[j]
-            used = float(tols[j])
+        for j, (k, used) in enumerate(zip(planar, tols.tolist(), strict=True)):
+            items, boxes = out_items[j], out_boxes[j]
+            if not items and not boxes:
+                out[k] = IntersectionList((), (), used)
+                continue
             listed = _with_tol(_refined(*plist[k], IntersectionList(items, boxes, used), used), used)
             out[k] = finish(listed, on_budget) if boxes else listed
     return [o if o is not None else IntersectionList() for o in out]
