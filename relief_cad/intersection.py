@@ -498,29 +498,56 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     return finish(IntersectionList(items, res.unresolved, ftol), on_budget)
 
 
-def _batch_rows(pts: FloatArray, wts: FloatArray, offsets: NDArray[np.int64], idx: NDArray[np.int64],
-                tols: FloatArray, budget: int, workers: int) -> FloatArray:
-    """The batch kernel's rows for every pair of ``idx``, run in chunks on ``workers`` threads.
+def _planar_batch(pairs: list[tuple[RationalBezier, RationalBezier]], tols: FloatArray, budget: int,
+                  on_budget: OnBudget, workers: int) -> list[IntersectionList]:
+    """The result lists of planar ``pairs`` (``tols``: each pair's resolved tolerance), in order.
 
-    Chunks are contiguous runs of pairs; their rows are joined in chunk order with column 0
-    shifted back to the pair's index, so the output is the same for any ``workers``.
+    The curves are packed once; contiguous chunks of pairs run on ``workers`` threads, each
+    through the batch kernel (without the GIL) and on to its result objects (with it), so one
+    chunk's objects are built while another's kernel runs. The output is the same for any
+    ``workers``; a budget error is that of the first pair, in order, whose budget ran out.
     """
-    n = idx.shape[0]
-    if workers <= 1 or n < 2 * _MIN_CHUNK:
-        rows: FloatArray = intersect_batch_kernel(pts, wts, offsets, idx, tols, budget)
-        return rows
-    size = max(_MIN_CHUNK, -(-n // (4 * workers)))
+    cps = [c.control_points for pr in pairs for c in pr]
+    offsets = np.zeros(len(cps) + 1, dtype=np.int64)
+    np.cumsum(np.fromiter(map(len, cps), dtype=np.int64, count=len(cps)), out=offsets[1:])
+    pts = np.ascontiguousarray(np.concatenate(cps))
+    wts = np.ascontiguousarray(np.concatenate([c.weights for pr in pairs for c in pr]))
+    pts.flags.writeable = False
+    wts.flags.writeable = False
+    idx = np.arange(2 * len(pairs), dtype=np.int64).reshape(-1, 2)
+    used = tols.tolist()
+    out: list[IntersectionList] = [IntersectionList()] * len(pairs)
+
+    def chunk(start: int, stop: int) -> None:
+        rows = intersect_batch_kernel(pts, wts, offsets, idx[start:stop], tols[start:stop], budget)
+        items: list[list[Result]] = [[] for _ in range(start, stop)]
+        boxes: list[list[ParameterBox]] = [[] for _ in range(start, stop)]
+        _distribute(rows, _batch_order(rows), items, boxes)
+        for j in range(stop - start):
+            k, tol = start + j, used[start + j]
+            if not items[j] and not boxes[j]:
+                out[k] = IntersectionList((), (), tol)
+                continue
+            listed = _with_tol(_refined(*pairs[k], IntersectionList(items[j], boxes[j], tol), tol), tol)
+            out[k] = finish(listed, on_budget) if boxes[j] else listed
+
+    n = len(pairs)
+    size = n if workers <= 1 or n < 2 * _MIN_CHUNK else max(_MIN_CHUNK, -(-n // (4 * workers)))
     starts = range(0, n, size)
-
-    def chunk(s: int) -> FloatArray:
-        part: FloatArray = intersect_batch_kernel(pts, wts, offsets, idx[s:s + size], tols[s:s + size],
-                                                  budget)
-        part[:, 0] += s
-        return part
-
-    with ThreadPoolExecutor(max_workers=min(workers, len(starts))) as pool:
-        joined: FloatArray = np.concatenate(list(pool.map(chunk, starts)))
-    return joined
+    # many small objects at once: keep the cyclic GC from rescanning them repeatedly
+    gc_enabled = gc.isenabled()
+    gc.disable()
+    try:
+        if len(starts) == 1:
+            chunk(0, n)
+        else:
+            with ThreadPoolExecutor(max_workers=min(workers, len(starts))) as pool:
+                for _ in pool.map(lambda s: chunk(s, min(n, s + size)), starts):
+                    pass  # in order: the first chunk that raised raises here
+    finally:
+        if gc_enabled:
+            gc.enable()
+    return out
 
 
 _MIN_CHUNK = 64  # pairs per thread task, at least: below that the pool costs more than it gains
@@ -573,8 +600,6 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
     nworkers = check_workers(workers)
     planar: list[int] = []
     out: list[IntersectionList | None] = [None] * len(plist)
-    cps: list[FloatArray] = []
-    wss: list[FloatArray] = []
     for k, pr in enumerate(plist):
         if not isinstance(pr, tuple) or len(pr) != 2:
             raise InputTypeError(f"pairs[{k}] should be a tuple (a, b), not {type(pr).__name__}")
@@ -587,38 +612,12 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
         pb = b.control_points
         if pa.shape[1] == 2 and pb.shape[1] == 2 and not _may_coincide(pa, pb, ftol):
             planar.append(k)
-            cps.append(pa)
-            cps.append(pb)
-            wss.append(a.weights)
-            wss.append(b.weights)
         else:
             out[k] = intersect(a, b, tol=ftol, budget=nbudget, on_budget=on_budget)
     if planar:
-        offsets = np.zeros(len(cps) + 1, dtype=np.int64)
-        np.cumsum(np.fromiter(map(len, cps), dtype=np.int64, count=len(cps)), out=offsets[1:])
-        pts = np.ascontiguousarray(np.concatenate(cps))
-        wts = np.ascontiguousarray(np.concatenate(wss))
-        pts.flags.writeable = False
-        wts.flags.writeable = False
-        idx = np.arange(2 * len(planar), dtype=np.int64).reshape(-1, 2)
         tols = (_pairs_default_tolerances([plist[k] for k in planar])
                 if ftol is None else np.array([resolve_tolerance(ftol, *plist[k]) for k in planar]))
-        res = _batch_rows(pts, wts, offsets, idx, tols, nbudget, nworkers)
-        out_items: list[list[Result]] = [[] for _ in planar]
-        out_boxes: list[list[ParameterBox]] = [[] for _ in planar]
-        # many small objects at once: keep the cyclic GC from rescanning them repeatedly
-        gc_enabled = gc.isenabled()
-        gc.disable()
-        try:
-            _distribute(res, _batch_order(res), out_items, out_boxes)
-        finally:
-            if gc_enabled:
-                gc.enable()
-        for j, (k, used) in enumerate(zip(planar, tols.tolist(), strict=True)):
-            items, boxes = out_items[j], out_boxes[j]
-            if not items and not boxes:
-                out[k] = IntersectionList((), (), used)
-                continue
-            listed = _with_tol(_refined(*plist[k], IntersectionList(items, boxes, used), used), used)
-            out[k] = finish(listed, on_budget) if boxes else listed
+        for k, listed in zip(planar, _planar_batch([plist[k] for k in planar], tols, nbudget, on_budget,
+                                                   nworkers), strict=True):
+            out[k] = listed
     return [o if o is not None else IntersectionList() for o in out]
