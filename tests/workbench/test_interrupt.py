@@ -20,10 +20,17 @@ N = 4000  # corpus items: the compiled core runs 400 cubic pairs in about a seco
 
 def start(corpus: Path, out: Path) -> subprocess.Popen[str]:
     env = {**os.environ, "PYTHONPATH": os.pathsep.join([os.environ.get("PYTHONPATH", ""), str(ROOT)])}
+    # Ctrl-C as a terminal's foreground job gets it: SIGINT at its default, even when this suite
+    # runs as a background job (which a shell starts with SIGINT ignored, and children inherit that)
     return subprocess.Popen(
         [sys.executable, "-m", "relief_cad_workbench", "compare", corpus, "--out", out, "--workers", "2", "--quiet"],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, start_new_session=True,
+        preexec_fn=_sigint_default,
     )
+
+
+def _sigint_default() -> None:
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
 
 
 def records(out: Path) -> list[str]:
