@@ -178,8 +178,7 @@ def intersect_one_kernel(
     """
     if ends_lim >= 0.0 and _ends_match(PA, PB, ends_lim):
         return None
-    if _boxes_apart(PA, PB, tol):
-        return _NO_ROWS
-    # no ``res``: the pair kernel makes its result rows with its scratch buffer (one allocation)
+    # no ``res``: the pair kernel makes its result rows with its scratch buffer (one allocation);
+    # it tests the boxes itself first (boxes apart: no allocation, no rows)
     res, nres = intersect_pair_kernel(PA, WA, PB, WB, tol, budget, 0, None, 0)
     return res[:nres] if nres else _NO_ROWS
