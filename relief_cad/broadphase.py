@@ -7,9 +7,10 @@ other axes filter those candidates. The cost is ``O(n log n + k)``, ``k`` the
 number of pairs overlapping along the sweep axis, instead of the ``n^2`` of
 testing all pairs.
 
-:func:`cluster_points` uses the same sweep to merge points closer than a
-tolerance (the de-duplication of intersection results, and the cut points that
-become one vertex).
+:func:`cluster_points` merges points closer than a tolerance (the cut points
+that become one vertex) with a grid instead: a sweep along one axis degenerates
+when many points share that coordinate (copies of a part side by side, an
+axis-aligned pattern), while grid cells hold only the points that are truly near.
 
 >>> import numpy as np
 >>> lows = np.array([[0.0, 0.0], [0.5, 0.5], [3.0, 0.0]])
@@ -227,7 +228,9 @@ def cluster_points(
     pts = np.asarray(points, dtype=np.float64)
     if pts.ndim != 2:
         raise ShapeError(f"expected points of shape (n, dim); received an array of shape {pts.shape}")
-    close = box_pairs(pts, pts, pad=_pad(tol))
+    if not np.all(np.isfinite(pts)):
+        raise InvalidInputError("expected finite points; received NaN or inf")
+    close = _grid_pairs(pts, _pad(tol))
     if close.shape[0]:
         d = np.linalg.norm(pts[close[:, 0]] - pts[close[:, 1]], axis=1)
         close = close[d <= tol]
@@ -237,6 +240,52 @@ def cluster_points(
             f"expected links between point indices 0..{pts.shape[0] - 1}; received {extra.tolist()}"
         )
     return _components(pts.shape[0], np.vstack([close, extra]))
+
+
+def _grid_pairs(pts: FloatArray, tol: float) -> IntArray:
+    """Candidate pairs ``(i, j)`` of points that may lie within ``tol``: those in neighbouring grid cells.
+
+    The cells are cubes of side ``h >= 2 tol`` (at most about a million of them along
+    each axis), so two points within ``tol`` lie in cells at most one apart on every axis,
+    whatever the rounding of ``(p - lo) / h``. Each point is paired with the later points of
+    its own cell and with every point of half of its neighbouring cells (the other half
+    pairs from the other side). Unlike a sweep along one axis, points sharing a
+    coordinate (copies of a part on a row, an axis-aligned grid) cost nothing extra: the
+    candidates grow with the points per cell, not per column.
+    """
+    n, dim = pts.shape
+    if n < 2 or dim == 0:
+        return np.empty((0, 2), dtype=np.int64)
+    lo = pts.min(axis=0)
+    span = float(np.max(pts.max(axis=0) - lo))
+    per_axis = float(2 ** min(20, 60 // dim))  # cells per axis: the keys below fit in int64
+    h = 2.0 * max(tol, span / per_axis)
+    if not h > 0.0:  # one point repeated, tol 0: one cell
+        h = 1.0
+    cells = np.floor((pts - lo) / h).astype(np.int64) + 1  # >= 1: a neighbour's index is never < 0
+    sizes = cells.max(axis=0) + 2
+    strides = np.concatenate([np.cumprod(sizes[::-1])[::-1][1:], [1]]).astype(np.int64)
+    key = cells @ strides
+    order = np.argsort(key, kind="stable")
+    sk = key[order]
+    position = np.arange(n, dtype=np.int64)
+    own_i, own_j = _ranges(position + 1, np.searchsorted(sk, sk, side="right").astype(np.int64))
+    found_i, found_j = [own_i], [own_j]
+    for step in _half_neighbours(dim):
+        target = sk + int(step @ strides)
+        starts = np.searchsorted(sk, target, side="left").astype(np.int64)
+        stops = np.searchsorted(sk, target, side="right").astype(np.int64)
+        i, j = _ranges(starts, stops)
+        found_i.append(i)
+        found_j.append(j)
+    return np.stack([order[np.concatenate(found_i)], order[np.concatenate(found_j)]], axis=1)
+
+
+def _half_neighbours(dim: int) -> list[IntArray]:
+    """The offsets in ``{-1, 0, 1}^dim`` whose first non-zero entry is +1 (half of the neighbours)."""
+    grid = np.array(np.meshgrid(*([[-1, 0, 1]] * dim), indexing="ij")).reshape(dim, -1).T
+    firsts = [row[np.flatnonzero(row)[0]] if np.any(row) else 0 for row in grid]
+    return [row.astype(np.int64) for row, first in zip(grid, firsts, strict=True) if first == 1]
 
 
 def _components(n: int, edges: IntArray) -> IntArray:

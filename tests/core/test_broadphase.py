@@ -49,6 +49,21 @@ def test_sweep_work_grows_with_nearby_pairs_not_all_pairs():
     assert np.all(pairs[:, 1] == pairs[:, 0] + 1)
 
 
+def test_cluster_candidates_grow_with_nearby_points_not_shared_coordinates():
+    # 40,000 points on a 200 x 200 grid: a sweep along x pairs the 200 points of each column
+    # (4 million candidates); grid cells give each point its few real neighbours
+    from relief_cad.broadphase import _grid_pairs
+
+    x, y = np.meshgrid(np.arange(200.0), np.arange(200.0))
+    pts = np.column_stack([x.ravel(), y.ravel(), np.zeros(x.size)])
+    pts = np.vstack([pts, pts[:100] + 1e-9])  # 100 near duplicates
+    candidates = _grid_pairs(pts, 1e-6)
+    assert candidates.shape[0] <= 2 * pts.shape[0]
+    labels = cluster_points(pts, 1e-6)
+    assert labels.max() + 1 == 40000
+    assert np.array_equal(labels[40000:], labels[:100])
+
+
 @pytest.mark.parametrize("seed", range(5))
 def test_cluster_points_are_the_components_of_the_closeness_graph(seed):
     rng = np.random.default_rng(seed)
