@@ -48,12 +48,20 @@ def _glyphs(n: int) -> list[Any]:
     while len(edges) < n:
         y0 = -14.0 * line
         glyphs = bd.Text(text, font_size=10).moved(bd.Location((0, y0, 0)))
-        edges.extend(e.wrapped for e in glyphs.edges())
+        # build123d lists a glyph's contours in an order that varies from run to run (the dot and
+        # the stem of "i"): sorted by place, the first n edges are the same in every run
+        for face in sorted(glyphs.faces(), key=_place):
+            edges.extend(e.wrapped for e in face.edges())
         for k in range(20):
             pts = [bd.Vector(x, y0 - 6 + 0.6 * k + 0.8 * math.sin(0.7 * x + k)) for x in range(-60, 65, 5)]
             edges.append(bd.Edge.make_spline(pts).wrapped)
         line += 1
     return edges[:n]
+
+
+def _place(shape: Any) -> tuple[float, float]:
+    centre = shape.bounding_box().center()
+    return (round(centre.X, 6), round(centre.Y, 6))
 
 
 def _fillets(n: int) -> list[Any]:
