@@ -160,7 +160,7 @@ class _EdgeInfo:
     last: float
     frame: np.ndarray | None = None  # the common 2D frame of all edges, when there is one
     _curves2d: dict[int, RationalBezier] | None = None
-    _packed: tuple[list[list[float]], list[float], list[int]] | None = None  # see _planar_arrays
+    _packed: _Packed | None = None  # see _planar_arrays
     _vertices: tuple[Any, Any] | None = None
 
     @property
@@ -416,11 +416,16 @@ def _cannot_cross_itself(rows: list[list[float]]) -> bool:
     return dot >= 0.0 or cross > 1e-9 * math.hypot(*a) * math.hypot(*b)
 
 
-def _planar_arrays(e: _EdgeInfo) -> tuple[list[list[float]], list[float], list[int]]:
-    """An edge's segments in the common frame, packed: points ``[x, y]``, weights, offsets.
+_Packed = tuple[list[list[float]], list[float], list[int], list[list[float]]]
+
+
+def _planar_arrays(e: _EdgeInfo) -> _Packed:
+    """An edge's segments in the common frame, packed: points ``[x, y]``, weights, offsets, ends.
 
     The values are those of the segments' planar :class:`RationalBezier` curves
-    (:func:`_curve2d`): the same homogeneous rows divided by the same weights.
+    (:func:`_curve2d`): the same homogeneous rows divided by the same weights. ``ends``
+    holds per segment its first and last points in space, ``[x0, y0, z0, x1, y1, z1]``
+    (the rows divided by their weights, for :func:`_ends_meet_packed`).
     """
     if e._packed is None:
         frame = e.frame
@@ -438,55 +443,84 @@ def _planar_arrays(e: _EdgeInfo) -> tuple[list[list[float]], list[float], list[i
                 for x, y, w in _to_plane(s, frame).homogeneous.tolist():
                     pts.append([x / w, y / w])
                     ws.append(w)
-        e._packed = (pts, ws, offsets)
+        ends = [[c / r[-1] for r in (seg[0], seg[-1]) for c in r[:-1]] for seg in e.rows]
+        e._packed = (pts, ws, offsets, ends)
     return e._packed
 
 
-def _solve_packed(jobs: list[_Job], tol: float) -> list[list[_Found]]:
-    """Planar jobs in the common frame: one call of the batch kernel on packed control points."""
-    job = jobs[0]
-    if len(jobs) == 1 and job.ea is not job.eb:
-        pts_a, ws_a, offsets_a = _planar_arrays(job.ea)
-        pts_b, ws_b, offsets_b = _planar_arrays(job.eb)
-        shift = len(ws_a)
-        offsets = offsets_a + [shift + o for o in offsets_b[1:]]
-        P = np.array(pts_a + pts_b)
-        W = np.array(ws_a + ws_b)
-        pairs = np.array([(job.i, len(offsets_a) - 1 + job.j)], dtype=np.int64)
-    else:
-        pts: list[list[float]] = []
-        ws: list[float] = []
-        offsets = [0]
-        starts: dict[int, int] = {}  # id(edge info) -> index of its first segment among the packed curves
-        for job in jobs:
-            for e in (job.ea, job.eb):
-                if id(e) not in starts:
-                    e_pts, e_ws, e_offsets = _planar_arrays(e)
-                    starts[id(e)] = len(offsets) - 1
-                    shift = len(ws)
-                    pts.extend(e_pts)
-                    ws.extend(e_ws)
-                    offsets.extend([shift + o for o in e_offsets[1:]])
-        P = np.array(pts)
-        W = np.array(ws)
-        pairs = np.array([(starts[id(j.ea)] + j.i, starts[id(j.eb)] + j.j) for j in jobs], dtype=np.int64)
+def _pack(jobs: list[_Job]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The segments of the jobs' edges packed for the batch kernel: ``P, W, offsets, pairs, ends``.
+
+    Every edge once, in order of first use; ``pairs`` are the jobs' segment pairs as indices
+    of packed curves, ``ends`` the space end points of every packed curve (rows of 6).
+    """
+    pts: list[list[float]] = []
+    ws: list[float] = []
+    ends: list[list[float]] = []
+    offsets = [0]
+    starts: dict[int, int] = {}  # id(edge info) -> index of its first segment among the packed curves
+    pairs: list[tuple[int, int]] = []
+    for job in jobs:
+        for e in (job.ea, job.eb):
+            if id(e) not in starts:
+                e_pts, e_ws, e_offsets, e_ends = _planar_arrays(e)
+                starts[id(e)] = len(offsets) - 1
+                shift = len(ws)
+                pts.extend(e_pts)
+                ws.extend(e_ws)
+                ends.extend(e_ends)
+                offsets.extend([shift + o for o in e_offsets[1:]])
+        pairs.append((starts[id(job.ea)] + job.i, starts[id(job.eb)] + job.j))
+    P = np.array(pts)
+    W = np.array(ws)
     P.flags.writeable = False
     W.flags.writeable = False
-    packed_offsets = np.array(offsets, dtype=np.int64)
-    tols = np.array([tol] * len(jobs))
-    rows = intersect_batch_kernel(P, W, packed_offsets, pairs, tols, DEFAULT_BUDGET).tolist()
-    out: list[list[_Found]] = [[] for _ in jobs]
+    return P, W, np.array(offsets, dtype=np.int64), np.array(pairs, dtype=np.int64), np.array(ends)
+
+
+def _ends_meet_packed(ends: np.ndarray, pairs: np.ndarray, tol: float) -> np.ndarray:
+    """Flag the packed pairs whose segments' ends meet: both within ``tol`` of the other's (bools).
+
+    Nearness is the largest coordinate difference. Such pairs may coincide (a duplicate
+    edge), the clipping's slowest case: they go through ``relief_cad.intersect``, which
+    answers coincident curves before clipping.
+    """
+    a, b = ends[pairs[:, 0]], ends[pairs[:, 1]]
+
+    def near(p: np.ndarray, q: np.ndarray) -> np.ndarray:
+        return np.abs(p - q).max(axis=1) <= tol  # type: ignore[no-any-return]
+
+    a0, a1, b0, b1 = a[:, :3], a[:, 3:], b[:, :3], b[:, 3:]
+    return (near(a0, b0) & near(a1, b1)) | (near(a0, b1) & near(a1, b0))  # type: ignore[no-any-return]
+
+
+def _solve_packed(jobs: list[_Job], tol: float) -> list[list[_Found] | None]:
+    """Planar jobs in the common frame: one call of the batch kernel on packed control points.
+
+    A job whose segments' ends meet (:func:`_ends_meet_packed`) is left to the caller: None.
+    """
+    P, W, offsets, pairs, ends = _pack(jobs)
+    run = np.flatnonzero(~_ends_meet_packed(ends, pairs, tol))
+    rows: list[list[float]] = []
+    if run.size:
+        tols = np.full(run.shape[0], tol)
+        rows = intersect_batch_kernel(P, W, offsets, pairs[run], tols, DEFAULT_BUDGET).tolist()
+    out: list[list[_Found] | None] = [None] * len(jobs)
+    for k in run.tolist():
+        out[k] = []
+    which = run.tolist()
     for r in rows:
         kind = int(r[1])
+        job_index = which[int(r[0])]
         if kind == KIND_UNRESOLVED:
             # let the public intersector raise its BudgetExceededError with the partial results
-            job = jobs[int(r[0])]
+            job = jobs[job_index]
             _core()[0](_curve2d(job.ea, job.i), _curve2d(job.eb, job.j), tol=tol)
             raise InvalidInputError("internal: unresolved box without a budget error")  # pragma: no cover
         name = "crossing" if kind == KIND_CROSSING else "tangent" if kind == KIND_TANGENT else "overlap"
-        out[int(r[0])].append((name, r[2], r[3], r[4], r[5], r[8]))
+        out[job_index].append((name, r[2], r[3], r[4], r[5], r[8]))  # type: ignore[union-attr]
     for found in out:
-        if len(found) > 1:
+        if found is not None and len(found) > 1:
             found.sort(key=lambda f: f[1])
     return out
 
@@ -498,10 +532,10 @@ def _solve(jobs: list[_Job], tol: float, self_mode: bool = False) -> list[list[_
     two edges, a joint of two segments) are dropped later, so the batch kernel's answer stands there.
     """
     answers: list[list[_Found] | None] = [None] * len(jobs)
-    packed = [k for k, job in enumerate(jobs) if job.packed and not _ends_meet(job, tol)]
+    packed = [k for k, job in enumerate(jobs) if job.packed]
     if packed:
         for k, found in zip(packed, _solve_packed([jobs[k] for k in packed], tol), strict=True):
-            answers[k] = found if _final(jobs[k], found, self_mode) else None
+            answers[k] = found if found is not None and _final(jobs[k], found, self_mode) else None
     if all(a is not None for a in answers):
         return answers  # type: ignore[return-value]
     core, many = _core()
@@ -545,21 +579,6 @@ def _singular(rows: list[list[float]], s: float) -> bool:
         return False
     p, q = (rows[0], rows[1]) if s == 0.0 else (rows[-1], rows[-2])
     return all(x / p[-1] == y / q[-1] for x, y in zip(p[:-1], q[:-1], strict=True))
-
-
-def _ends_meet(job: _Job, tol: float) -> bool:
-    """True when both ends of segment ``i`` of ``ea`` are within ``tol`` of those of segment ``j`` of ``eb``.
-
-    Such pairs may coincide (a duplicate edge), the clipping's slowest case: they go through
-    ``relief_cad.intersect``, which answers coincident curves before clipping.
-    """
-    ra, rb = job.ea.rows[job.i], job.eb.rows[job.j]
-    a0, a1, b0, b1 = ([c / r[-1] for c in r[:-1]] for r in (ra[0], ra[-1], rb[0], rb[-1]))
-
-    def near(p: list[float], q: list[float]) -> bool:
-        return max(abs(x - y) for x, y in zip(p, q, strict=True)) <= tol
-
-    return (near(a0, b0) and near(a1, b1)) or (near(a0, b1) and near(a1, b0))
 
 
 def _as_found(results: Any) -> list[_Found]:
