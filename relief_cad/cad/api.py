@@ -37,6 +37,7 @@ i.e. at most ``1e-3`` of the diagonal of their joint bounding box; otherwise
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -45,7 +46,7 @@ from OCP.BRep import BRep_Tool
 from OCP.TopExp import TopExp
 
 from .._kernels import KIND_CROSSING, KIND_TANGENT, KIND_UNRESOLVED, intersect_batch_kernel
-from ..broadphase import box_pairs_between
+from ..broadphase import box_pairs, box_pairs_between
 from ..curves import RationalBezier
 from ..errors import InvalidInputError
 from ..intersection import DEFAULT_BUDGET
@@ -448,34 +449,47 @@ def _planar_arrays(e: _EdgeInfo) -> _Packed:
     return e._packed
 
 
-def _pack(jobs: list[_Job]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """The segments of the jobs' edges packed for the batch kernel: ``P, W, offsets, pairs, ends``.
+def _pack_edges(infos: list[_EdgeInfo]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, list[int]]:
+    """The segments of the edges packed for the batch kernel: ``P, W, offsets, ends, starts``.
 
-    Every edge once, in order of first use; ``pairs`` are the jobs' segment pairs as indices
-    of packed curves, ``ends`` the space end points of every packed curve (rows of 6).
+    ``ends`` holds the space end points of every packed curve (rows of 6), ``starts[k]`` the
+    index of edge ``k``'s first segment among the packed curves.
     """
     pts: list[list[float]] = []
     ws: list[float] = []
     ends: list[list[float]] = []
     offsets = [0]
-    starts: dict[int, int] = {}  # id(edge info) -> index of its first segment among the packed curves
-    pairs: list[tuple[int, int]] = []
-    for job in jobs:
-        for e in (job.ea, job.eb):
-            if id(e) not in starts:
-                e_pts, e_ws, e_offsets, e_ends = _planar_arrays(e)
-                starts[id(e)] = len(offsets) - 1
-                shift = len(ws)
-                pts.extend(e_pts)
-                ws.extend(e_ws)
-                ends.extend(e_ends)
-                offsets.extend([shift + o for o in e_offsets[1:]])
-        pairs.append((starts[id(job.ea)] + job.i, starts[id(job.eb)] + job.j))
+    starts: list[int] = []
+    for e in infos:
+        e_pts, e_ws, e_offsets, e_ends = _planar_arrays(e)
+        starts.append(len(offsets) - 1)
+        shift = len(ws)
+        pts.extend(e_pts)
+        ws.extend(e_ws)
+        ends.extend(e_ends)
+        offsets.extend([shift + o for o in e_offsets[1:]])
     P = np.array(pts)
     W = np.array(ws)
     P.flags.writeable = False
     W.flags.writeable = False
-    return P, W, np.array(offsets, dtype=np.int64), np.array(pairs, dtype=np.int64), np.array(ends)
+    return P, W, np.array(offsets, dtype=np.int64), np.array(ends).reshape(-1, 6), starts
+
+
+def _pack(jobs: list[_Job]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The jobs' edges packed (every edge once, in order of first use): ``P, W, offsets, pairs, ends``.
+
+    ``pairs`` are the jobs' segment pairs as indices of packed curves.
+    """
+    order: dict[int, int] = {}  # id(edge info) -> its place among the packed edges
+    edges: list[_EdgeInfo] = []
+    for job in jobs:
+        for e in (job.ea, job.eb):
+            if id(e) not in order:
+                order[id(e)] = len(edges)
+                edges.append(e)
+    P, W, offsets, ends, starts = _pack_edges(edges)
+    pairs = [(starts[order[id(j.ea)]] + j.i, starts[order[id(j.eb)]] + j.j) for j in jobs]
+    return P, W, offsets, np.array(pairs, dtype=np.int64).reshape(-1, 2), ends
 
 
 def _ends_meet_packed(ends: np.ndarray, pairs: np.ndarray, tol: float) -> np.ndarray:
@@ -500,42 +514,63 @@ def _solve_packed(jobs: list[_Job], tol: float) -> list[list[_Found] | None]:
     A job whose segments' ends meet (:func:`_ends_meet_packed`) is left to the caller: None.
     """
     P, W, offsets, pairs, ends = _pack(jobs)
+    return _batch_found(
+        P, W, offsets, pairs, ends, tol, lambda k: (jobs[k].ea, jobs[k].i, jobs[k].eb, jobs[k].j)
+    )
+
+
+def _batch_found(
+    P: np.ndarray, W: np.ndarray, offsets: np.ndarray, pairs: np.ndarray, ends: np.ndarray, tol: float,
+    pair_of: Callable[[int], tuple[_EdgeInfo, int, _EdgeInfo, int]],
+) -> list[list[_Found] | None]:
+    """The batch kernel on packed segment pairs: every pair's results by ``t``, None where the ends meet.
+
+    ``pair_of(k)`` names pair ``k``'s edges and segments, for the budget error of an unresolved pair.
+    """
     run = np.flatnonzero(~_ends_meet_packed(ends, pairs, tol))
     rows: list[list[float]] = []
     if run.size:
         tols = np.full(run.shape[0], tol)
         rows = intersect_batch_kernel(P, W, offsets, pairs[run], tols, DEFAULT_BUDGET).tolist()
-    out: list[list[_Found] | None] = [None] * len(jobs)
-    for k in run.tolist():
-        out[k] = []
+    out: list[list[_Found] | None] = [None] * pairs.shape[0]
     which = run.tolist()
+    for k in which:
+        out[k] = []
     for r in rows:
         kind = int(r[1])
-        job_index = which[int(r[0])]
+        k = which[int(r[0])]
         if kind == KIND_UNRESOLVED:
             # let the public intersector raise its BudgetExceededError with the partial results
-            job = jobs[job_index]
-            _core()[0](_curve2d(job.ea, job.i), _curve2d(job.eb, job.j), tol=tol)
+            ea, i, eb, j = pair_of(k)
+            _core()[0](_curve2d(ea, i), _curve2d(eb, j), tol=tol)
             raise InvalidInputError("internal: unresolved box without a budget error")  # pragma: no cover
         name = "crossing" if kind == KIND_CROSSING else "tangent" if kind == KIND_TANGENT else "overlap"
-        out[job_index].append((name, r[2], r[3], r[4], r[5], r[8]))  # type: ignore[union-attr]
+        out[k].append((name, r[2], r[3], r[4], r[5], r[8]))  # type: ignore[union-attr]
     for found in out:
         if found is not None and len(found) > 1:
             found.sort(key=lambda f: f[1])
     return out
 
 
-def _solve(jobs: list[_Job], tol: float, self_mode: bool = False) -> list[list[_Found]]:
+def _solve(
+    jobs: list[_Job], tol: float, self_mode: bool = False, known: list[list[_Found] | None] | None = None
+) -> list[list[_Found]]:
     """Run the core intersector on every job; planar two-curve jobs in one batched call.
 
     ``self_mode``: the self-intersections of one shape, whose end-to-end contacts (a vertex shared by
     two edges, a joint of two segments) are dropped later, so the batch kernel's answer stands there.
+    ``known``: the batch kernel's answers when they are known already (:func:`_model_jobs`).
     """
-    answers: list[list[_Found] | None] = [None] * len(jobs)
-    packed = [k for k, job in enumerate(jobs) if job.packed]
-    if packed:
-        for k, found in zip(packed, _solve_packed([jobs[k] for k in packed], tol), strict=True):
-            answers[k] = found if found is not None and _final(jobs[k], found, self_mode) else None
+    if known is None:  # the packed jobs through the batch kernel
+        known = [None] * len(jobs)
+        packed = [k for k, job in enumerate(jobs) if job.packed]
+        if packed:
+            for k, found in zip(packed, _solve_packed([jobs[k] for k in packed], tol), strict=True):
+                known[k] = found
+    answers: list[list[_Found] | None] = [
+        found if found is not None and _final(job, found, self_mode) else None
+        for job, found in zip(jobs, known, strict=True)
+    ]
     if all(a is not None for a in answers):
         return answers  # type: ignore[return-value]
     core, many = _core()
@@ -732,6 +767,68 @@ def _close_edge_pairs(infos_a: list[_EdgeInfo], infos_b: list[_EdgeInfo], tol: f
     ).tolist()
 
 
+def _segment_boxes(infos: list[_EdgeInfo]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Every segment of the edges, edge after edge: box corners (rows), its edge's index and its own."""
+    counts = [len(e.lows) for e in infos]
+    lows = np.array([c for e in infos for c in e.lows]).reshape(-1, 3)
+    highs = np.array([c for e in infos for c in e.highs]).reshape(-1, 3)
+    edge = np.repeat(np.arange(len(infos), dtype=np.int64), counts)
+    seg = np.arange(lows.shape[0], dtype=np.int64) - np.repeat(np.cumsum([0] + counts[:-1]), counts)
+    return lows, highs, edge, seg
+
+
+def _model_jobs(
+    infos_a: list[_EdgeInfo], infos_b: list[_EdgeInfo], self_mode: bool, tol: float
+) -> tuple[list[_Job], list[list[_Found] | None]]:
+    """The planar jobs of many edges, from one sweep over all segment boxes, with the batch kernel's answers.
+
+    The same jobs in the same order as the edge-pair path of :func:`_run` (edge pairs in order,
+    then segment pairs; a box pair tested with the lower index first), but a pair gets a
+    :class:`_Job` only when it has results or goes to ``relief_cad.intersect``: a segment
+    against itself, segments whose ends meet. The answers: the kernel's, None for the core.
+    """
+    everyone = infos_a if self_mode else infos_a + infos_b
+    P, W, offsets, ends, _ = _pack_edges(everyone)
+    lo, hi, edge, seg = _segment_boxes(everyone)
+    if self_mode:
+        pairs = box_pairs(lo, hi, pad=tol)
+        selves = [g for g in range(lo.shape[0]) if not _cannot_cross_itself(infos_a[edge[g]].rows[seg[g]])]
+    else:
+        na = sum(len(e.lows) for e in infos_a)
+        pairs = box_pairs_between(lo[:na], hi[:na], lo[na:], hi[na:], pad=tol)
+        pairs[:, 1] += na
+        selves = []
+    ga, gb = pairs[:, 0], pairs[:, 1]
+    order = np.lexsort((seg[gb], seg[ga], edge[gb], edge[ga]))
+    pairs = pairs[order]
+    ga, gb = pairs[:, 0].tolist(), pairs[:, 1].tolist()
+    edge_l, seg_l = edge.tolist(), seg.tolist()
+    found = _batch_found(
+        P, W, offsets, pairs, ends, tol,
+        lambda k: (everyone[edge_l[ga[k]]], seg_l[ga[k]], everyone[edge_l[gb[k]]], seg_l[gb[k]]),
+    )
+    keys = [
+        (edge_l[ga[k]], edge_l[gb[k]], seg_l[ga[k]], seg_l[gb[k]], k) for k, f in enumerate(found) if f != []
+    ]
+    keys += [(edge_l[g], edge_l[g], seg_l[g], seg_l[g], -1) for g in selves]
+    jobs: list[_Job] = []
+    answers: list[list[_Found] | None] = []
+    for ia, ib, i, j, k in sorted(keys):
+        ea, eb = everyone[ia], everyone[ib]
+        if k < 0:
+            jobs.append(_Job(ea, eb, i, j, _curve2d(ea, i), None))
+            answers.append(None)
+        else:
+            jobs.append(_Job(ea, eb, i, j, None, None, True))
+            answers.append(found[k])
+    return jobs, answers
+
+
+# above this many edge pairs, planar jobs come from one sweep over all segments (:func:`_model_jobs`);
+# below, edge pair by edge pair (:func:`_close_edge_pairs`, :func:`_pair_jobs`): the same jobs
+_SWEEP_ABOVE = 16
+
+
 def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float, list[_EdgeInfo]]:
     if tol is not None:
         check_tol(tol)  # the type and sign first, before the shapes are read
@@ -746,25 +843,26 @@ def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float, lis
         else check_model_tol(tol, [e.edge for e in everyone])
     frame = _common_frame(everyone, ftol, box)
     _set_plane(everyone, frame)
-    planar = frame is not None
-    jobs: list[_Job] = []
-    edge_pairs: list[tuple[_EdgeInfo, _EdgeInfo, bool]] = []
-    for ia, ib in _close_edge_pairs(infos_a, infos_b, ftol):
-        if b is None and ib < ia:
-            continue
-        ea, eb = infos_a[ia], infos_b[ib]
-        same = b is None and ia == ib
-        edge_pairs.append((ea, eb, same))
-        jobs.extend(_pair_jobs(ea, eb, same, ftol, planar, len(everyone) == (1 if same else 2)))
-    per_pair: dict[tuple[int, int], list[_Raw]] = {}
-    for job, found in zip(jobs, _solve(jobs, ftol, b is None), strict=True):
-        if found:
-            per_pair.setdefault((id(job.ea), id(job.eb)), []).extend(_raw_results(job, found))
+    if frame is not None and len(infos_a) * len(infos_b) > _SWEEP_ABOVE:  # many planar edges: one sweep
+        jobs, known = _model_jobs(infos_a, infos_b, b is None, ftol)
+        answers = _solve(jobs, ftol, b is None, known)
+    else:
+        jobs = []
+        for ia, ib in _close_edge_pairs(infos_a, infos_b, ftol):
+            if b is None and ib < ia:
+                continue
+            ea, eb = infos_a[ia], infos_b[ib]
+            same = b is None and ia == ib
+            alone = len(everyone) == (1 if same else 2)  # the pair holds every edge
+            jobs.extend(_pair_jobs(ea, eb, same, ftol, frame is not None, alone))
+        answers = _solve(jobs, ftol, b is None)
     raws: list[_Raw] = []
-    for ea, eb, same in edge_pairs:
-        pair = per_pair.get((id(ea), id(eb)))
-        if pair:
-            raws.extend(_clean_pair(pair, same, b is None, ftol))
+    pair: list[_Raw] = []  # the results of one edge pair (its jobs are consecutive)
+    for k, (job, found) in enumerate(zip(jobs, answers, strict=True)):
+        pair.extend(_raw_results(job, found) if found else [])
+        if pair and (k + 1 == len(jobs) or jobs[k + 1].ea is not job.ea or jobs[k + 1].eb is not job.eb):
+            raws.extend(_clean_pair(pair, b is None and job.ea is job.eb, b is None, ftol))
+            pair = []
     return flavour, raws, ftol, infos_a
 
 

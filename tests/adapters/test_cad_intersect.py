@@ -216,6 +216,38 @@ def test_two_filleted_sketch_wires():
         assert ocp.edges_of(w2)[r.index_b].IsSame(r.edge_b.wrapped)
 
 
+def _busy_sketch() -> tuple[list[bd.Edge], list[bd.Edge]]:
+    """Two sets of many planar edges: glyphs, filleted rectangles, a circle, a wavy spline, a Bézier
+    crossing itself, a tangent line, a partly overlapping copy of a rectangle and a doubled edge."""
+    glyphs = bd.Text("Re", font_size=6).edges()
+    rect = bd.RectangleRounded(4.0, 2.5, 0.6).edges()
+    moved = [e.translate((1.5, 0.0, 0.0)) for e in rect]  # shares stretches of the long sides
+    circle = bd.Edge.make_circle(1.0).translate((1.0, 1.0, 0.0))
+    tangent = bd.Edge.make_line((-3.0, 2.0, 0.0), (5.0, 2.0, 0.0))  # touches the circle's top
+    wavy = bd.Edge.make_spline([bd.Vector(x, 0.8 * math.sin(x)) for x in np.linspace(-4.0, 6.0, 12)])
+    loop = bd.Edge(BRepBuilderAPI_MakeEdge(Geom_BezierCurve(_poles([(0, 0), (3, 2), (-1, 2), (2, 0)]))).Edge())
+    a = list(glyphs) + list(rect) + [circle, wavy, rect[0]]
+    b = moved + [tangent, loop]
+    return a, b
+
+
+def _rows(results: list) -> list[tuple]:
+    return [(type(r).__name__, r.index_a, r.index_b, r.t, r.u, getattr(r, "point", None)) for r in results]
+
+
+@pytest.mark.parametrize("two_sets", [False, True])
+def test_one_sweep_over_all_segments_finds_what_edge_pairs_find(monkeypatch, two_sets):
+    a, b = _busy_sketch()
+    args = (a, b) if two_sets else (a + b,)
+    assert len(args[0]) * len(args[-1]) > api._SWEEP_ABOVE  # the sweep runs
+    swept = api.intersections(*args)
+    monkeypatch.setattr(api, "_SWEEP_ABOVE", 10**9)  # edge pair by edge pair
+    assert _rows(swept) == _rows(api.intersections(*args))
+    kinds = {type(r).__name__ for r in swept} | {getattr(r, "kind", "") for r in swept}
+    assert {"EdgeOverlap", "crossing", "tangent"} <= kinds  # the core's post-pass ran too
+    check_on_edges(swept, tol=1e-7)
+
+
 # ----------------------------------------------------------------------------- once only
 def test_shared_vertex_reported_once():
     a = seg(XY, (0, 0), (1, 1))
