@@ -323,13 +323,15 @@ def _bbox_update(P: cython.const[cython.double][:, :], box: cython.double[:]):
 
 
 def _curve_box_update(
-    P: cython.const[cython.double][:, :], W: cython.const[cython.double][:], box: cython.double[:]
+    P: cython.const[cython.double][:, :], W: cython.const[cython.double][:], box: cython.double[:],
+    wk: cython.double[:, :],
 ):
     """Grow ``box`` (per coordinate ``[lo, hi]`` pairs) by samples of the curve itself.
 
     The curve is sampled at ``2 (n + 1) + 1`` uniform parameters by homogeneous de
     Casteljau: the curve's own extent, not its control polygon's (which can be far
-    larger for ill-conditioned curves).
+    larger for ill-conditioned curves). ``wk`` is work space of at least ``n + 1`` rows
+    and ``dim + 1`` columns (overwritten).
     """
     i: cython.Py_ssize_t
     j: cython.Py_ssize_t
@@ -341,7 +343,6 @@ def _curve_box_update(
     m: cython.Py_ssize_t = P.shape[0]
     d: cython.Py_ssize_t = P.shape[1]
     ns: cython.Py_ssize_t = 2 * m + 1
-    wk: cython.double[:, :] = np.empty((m, d + 1))  # typed: numpy indexing here cost 0.1 s at degree 32
     for k in range(ns):
         t = k / (ns - 1.0)
         s = 1.0 - t

@@ -405,9 +405,8 @@ def _pair_core(
         box[1] = -_INF
         box[2] = _INF
         box[3] = -_INF
-        with cython.gil:  # it allocates
-            _curve_box_update(PA, WA, box)
-            _curve_box_update(PB, WB, box)
+        _curve_box_update(PA, WA, box, wa)
+        _curve_box_update(PB, WB, box, wb)
         ext = scale * hypot(box[1] - box[0], box[3] - box[2])
         if ext < 0.25:
             epsb = 4e-7 * ext
