@@ -65,15 +65,22 @@ def test_cluster_candidates_grow_with_nearby_points_not_shared_coordinates():
 
 
 @pytest.mark.parametrize("seed", range(5))
-def test_cluster_points_are_the_components_of_the_closeness_graph(seed):
+@pytest.mark.parametrize("n", [60, 400])  # all pairs tested, then grid cells
+def test_cluster_points_are_the_components_of_the_closeness_graph(seed, n):
     rng = np.random.default_rng(seed)
-    pts = np.round(rng.random((60, 2)) * 5, 1)  # many exact and near duplicates
+    pts = np.round(rng.random((n, 2)) * 5, 1)  # many exact and near duplicates
     tol = 0.15
     labels = cluster_points(pts, tol)
-    close = np.linalg.norm(pts[:, None] - pts[None, :], axis=2) <= tol
-    reach = close.copy()
-    for _ in range(len(pts)):
-        reach = (reach.astype(int) @ close.astype(int)) > 0
+    root = list(range(n))  # union-find over every pair within tol
+
+    def find(i):
+        while root[i] != i:
+            i = root[i]
+        return i
+
+    for i, j in zip(*np.nonzero(np.linalg.norm(pts[:, None] - pts[None, :], axis=2) <= tol)):
+        root[find(int(i))] = find(int(j))
+    reach = np.array([[find(i) == find(j) for j in range(n)] for i in range(n)])
     assert np.array_equal(labels[:, None] == labels[None, :], reach)
     first = [int(np.flatnonzero(labels == k)[0]) for k in range(labels.max() + 1)]
     assert first == sorted(first)  # numbered by first appearance
