@@ -26,10 +26,12 @@ clip range is where both hulls reach ``>= 0``.
 
 from __future__ import annotations
 
+from concurrent.futures import ThreadPoolExecutor
+
 import numpy as np
 from numpy.typing import NDArray
 
-from ._checks import check_tol
+from ._checks import check_tol, check_workers
 from ._kernels import (
     clip_range_kernel,
     fat_line_kernel,
@@ -43,6 +45,7 @@ from .tolerances import _default_tolerances, resolve_tolerance
 
 __all__ = [
     "RESULT_COLUMNS",
+    "batch_rows",
     "clip_range",
     "compute_fat_line",
     "distance_coefficients",
@@ -185,7 +188,8 @@ def clip_range(nodes: FloatArray, weights: FloatArray | None,
 
 
 def intersect_packed(points: FloatArray, weights: FloatArray, offsets: FloatArray, pairs: FloatArray,
-                     tol: float | None = None, budget: int = 500_000) -> FloatArray:
+                     tol: float | None = None, budget: int = 500_000, *,
+                     workers: int | None = None) -> FloatArray:
     """Intersect many planar curve pairs given as packed arrays; return raw result rows.
 
     The fastest entry point (no Python objects per pair): one compiled call.
@@ -205,6 +209,9 @@ def intersect_packed(points: FloatArray, weights: FloatArray, offsets: FloatArra
         each pair's rounding floor (:func:`relief_cad.tolerances.resolve_tolerance`).
     budget : int
         Iteration budget per pair.
+    workers : int, keyword-only
+        Threads the pairs run on (:func:`batch_rows`); default: every core. The rows are
+        the same for any number.
 
     Returns
     -------
@@ -240,9 +247,49 @@ def intersect_packed(points: FloatArray, weights: FloatArray, offsets: FloatArra
     w = w.view()  # the caller's arrays stay writeable
     p.flags.writeable = False
     w.flags.writeable = False
+    nworkers = check_workers(workers)
     tols = _pair_tolerances(p, w, off, pr, given)
-    rows: FloatArray = intersect_batch_kernel(p, w, off, pr, tols, int(budget))
-    return rows
+    return batch_rows(p, w, off, pr, tols, int(budget), nworkers)
+
+
+_MIN_CHUNK = 256  # pairs per thread, at least: below that a thread costs more than it gains
+
+
+def batch_rows(points: FloatArray, weights: FloatArray, offsets: NDArray[np.int64], pairs: NDArray[np.int64],
+               tols: FloatArray, budget: int, workers: int = 1) -> FloatArray:
+    """Run the batch kernel on packed pairs, split into chunks over ``workers`` threads: all rows.
+
+    The arrays are those of :func:`intersect_packed`, already checked (``points`` and
+    ``weights`` read-only); ``tols`` holds each pair's tolerance (model units). The kernel
+    runs without the GIL, so the chunks run at once; their rows are joined in pair order
+    (column 0 indexes ``pairs``), the same rows for any ``workers``. An exception is that of
+    the first chunk, in order, that raised.
+
+    >>> pts = np.array([[0.0, 0.0], [2.0, 2.0], [0.0, 2.0], [2.0, 0.0]])
+    >>> pts.flags.writeable = False
+    >>> w = np.ones(4)
+    >>> w.flags.writeable = False
+    >>> pairs = np.array([[0, 1]] * 600)
+    >>> rows = batch_rows(pts, w, np.array([0, 2, 4]), pairs, np.full(600, 1e-9), 1000, workers=2)
+    >>> rows.shape, rows[-1, :4].tolist()
+    ((600, 9), [599.0, 0.0, 0.5, 0.5])
+    """
+    n = pairs.shape[0]
+    size = n if workers <= 1 or n < 2 * _MIN_CHUNK else max(_MIN_CHUNK, -(-n // workers))
+    if size >= n:
+        rows: FloatArray = intersect_batch_kernel(points, weights, offsets, pairs, tols, budget)
+        return rows
+
+    def chunk(start: int) -> FloatArray:
+        part: FloatArray = intersect_batch_kernel(
+            points, weights, offsets, pairs[start:start + size], tols[start:start + size], budget
+        )
+        part[:, 0] += start
+        return part
+
+    starts = range(0, n, size)
+    with ThreadPoolExecutor(max_workers=min(workers, len(starts))) as pool:
+        return np.concatenate(list(pool.map(chunk, starts)))
 
 
 def _pair_tolerances(p: FloatArray, w: FloatArray, off: NDArray[np.int64], pairs: NDArray[np.int64],

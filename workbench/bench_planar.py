@@ -170,10 +170,12 @@ def _batch_rates(n: int, repeat: int) -> dict[str, float]:
     offsets = np.arange(0, 4 * 2 * len(batch) + 1, 4)
     idx = np.arange(2 * len(batch)).reshape(-1, 2)
     wts = np.ones(pts.shape[0])
-    t_packed = _time(lambda: intersect_packed(pts, wts, offsets, idx), repeat)
+    t_packed = _time(lambda: intersect_packed(pts, wts, offsets, idx, workers=1), repeat)
+    t_packed_all = _time(lambda: intersect_packed(pts, wts, offsets, idx), repeat)
     return {"batch_pairs": n, "threads_all": os.cpu_count() or 1,
             "batch_pairs_per_s_1_thread": n / t1, "batch_pairs_per_s_all_threads": n / tall,
-            "thread_speedup": t1 / tall, "packed_pairs_per_s_1_thread": n / t_packed}
+            "thread_speedup": t1 / tall, "packed_pairs_per_s_1_thread": n / t_packed,
+            "packed_pairs_per_s_all_threads": n / t_packed_all}
 
 
 def run(repeat: int = 5, batch: int = 2000) -> dict[str, Any]:
@@ -231,7 +233,8 @@ def _main() -> None:
           + ", ".join(f"{k} {v:.3f}" for k, v in r.get("random_pair_ratios", {}).items()))
     print(f"batch of {r['batch_pairs']:,} random cubic pairs: {r['batch_pairs_per_s_1_thread']:,.0f} pairs/s "
           f"on 1 thread, {r['batch_pairs_per_s_all_threads']:,.0f} on {r['threads_all']} "
-          f"({r['thread_speedup']:.2f}x); packed rows {r['packed_pairs_per_s_1_thread']:,.0f} pairs/s")
+          f"({r['thread_speedup']:.2f}x); packed rows {r['packed_pairs_per_s_1_thread']:,.0f} pairs/s "
+          f"(all threads {r['packed_pairs_per_s_all_threads']:,.0f})")
     print(f"fresh process: import {r['import_s'] * 1e3:.0f} ms, "
           f"first planar {r['first_planar_s'] * 1e3:.0f} ms, first space {r['first_space_s'] * 1e3:.0f} ms, "
           f"total {r['fresh_total_s'] * 1e3:.0f} ms")

@@ -45,8 +45,10 @@ import numpy as np
 from OCP.BRep import BRep_Tool
 from OCP.TopExp import TopExp
 
-from .._kernels import KIND_CROSSING, KIND_TANGENT, KIND_UNRESOLVED, intersect_batch_kernel
+from .._checks import check_workers
+from .._kernels import KIND_CROSSING, KIND_TANGENT, KIND_UNRESOLVED
 from ..broadphase import box_pairs, box_pairs_between
+from ..clipping import batch_rows
 from ..curves import RationalBezier
 from ..errors import InvalidInputError
 from ..intersection import DEFAULT_BUDGET
@@ -531,7 +533,7 @@ def _batch_found(
     rows: list[list[float]] = []
     if run.size:
         tols = np.full(run.shape[0], tol)
-        rows = intersect_batch_kernel(P, W, offsets, pairs[run], tols, DEFAULT_BUDGET).tolist()
+        rows = batch_rows(P, W, offsets, pairs[run], tols, DEFAULT_BUDGET, check_workers(None)).tolist()
     out: list[list[_Found] | None] = [None] * pairs.shape[0]
     which = run.tolist()
     for k in which:

@@ -7,7 +7,7 @@ import pytest
 
 from relief_cad.clipping import clip_range, compute_fat_line, distance_coefficients, hull_range
 from relief_cad.curves import RationalBezier
-from relief_cad.errors import ShapeError
+from relief_cad.errors import InvalidInputError, ShapeError
 
 
 def _dist(line: tuple[float, float, float, float, float], pts: np.ndarray) -> np.ndarray:
@@ -102,6 +102,22 @@ def test_intersect_packed_matches_intersect() -> None:
         mine = sorted((r[2], r[3]) for r in rows if r[0] == k)
         ref = [(x.t, x.u) for x in intersect(curves[i], curves[j])]
         assert mine == ref
+
+
+def test_intersect_packed_rows_are_the_same_on_any_number_of_threads() -> None:
+    from relief_cad.clipping import intersect_packed
+
+    rng = np.random.default_rng(11)
+    pts = rng.random((4 * 300, 2))
+    offsets = np.arange(0, 4 * 301, 4)
+    pairs = rng.integers(0, 300, (2000, 2))  # enough for several chunks of pairs
+    one = intersect_packed(pts, np.ones(pts.shape[0]), offsets, pairs, workers=1)
+    assert one.shape[0] > 1000 and set(one[:, 0].astype(int)) <= set(range(2000))
+    assert np.all(np.diff(one[:, 0]) >= 0)  # grouped by pair, in pair order
+    for workers in (2, 3, 8):
+        assert np.array_equal(intersect_packed(pts, np.ones(pts.shape[0]), offsets, pairs, workers=workers), one)
+    with pytest.raises(InvalidInputError):
+        intersect_packed(pts, np.ones(pts.shape[0]), offsets, pairs, workers=0)
 
 
 def test_intersect_packed_rejects_bad_offsets() -> None:
