@@ -1,16 +1,13 @@
 """Broad phase: which boxes may touch, and which points are one point (numpy only, no OCP).
 
-Sort-and-sweep over axis-aligned boxes: the boxes are sorted by their lower
-corner along the axis where the fewest of them overlap, and each box is paired only with
-the boxes whose lower corner falls inside its own extent along that axis; the
-other axes filter those candidates. The cost is ``O(n log n + k)``, ``k`` the
-number of pairs overlapping along the sweep axis, instead of the ``n^2`` of
-testing all pairs.
+Boxes go into the cells of a uniform grid about as large as the typical box; only
+boxes sharing a cell are tested against each other, so the cost grows with the
+boxes that are near each other, not with all pairs. Unlike a sweep along one
+axis, it does not degenerate when many boxes share a coordinate range (copies of
+a part side by side, an axis-aligned pattern of shapes).
 
 :func:`cluster_points` merges points closer than a tolerance (the cut points
-that become one vertex) with a grid instead: a sweep along one axis degenerates
-when many points share that coordinate (copies of a part side by side, an
-axis-aligned pattern), while grid cells hold only the points that are truly near.
+that become one vertex) through the same grid.
 
 >>> import numpy as np
 >>> lows = np.array([[0.0, 0.0], [0.5, 0.5], [3.0, 0.0]])
@@ -21,8 +18,6 @@ axis-aligned pattern), while grid cells hold only the points that are truly near
 
 from __future__ import annotations
 
-import functools
-import itertools
 from collections.abc import Sequence
 
 import numpy as np
@@ -58,23 +53,6 @@ def _pad(pad: float) -> float:
     return value
 
 
-def _sweep_axis(lo: FloatArray, hi: FloatArray, pad: float) -> int:
-    """The axis along which a sweep meets the fewest candidate pairs.
-
-    Boxes sharing a coordinate range (shapes side by side in a row) make a poor sweep
-    axis: counting each axis's candidates costs a sort per axis, far less than testing
-    many times more candidates.
-    """
-    if lo.shape[0] == 0:
-        return 0
-    counts = []
-    for axis in range(lo.shape[1]):
-        keys = np.sort(lo[:, axis])
-        stops = np.searchsorted(keys, hi[:, axis] + pad, side="right")
-        counts.append(int(np.sum(stops - np.searchsorted(keys, lo[:, axis], side="left"))))
-    return int(np.argmin(counts))
-
-
 def _ranges(starts: IntArray, stops: IntArray) -> tuple[IntArray, IntArray]:
     """All ``(k, m)`` with ``starts[k] <= m < stops[k]``, as two flat arrays (no Python loop)."""
     counts = np.maximum(stops - starts, 0)
@@ -84,20 +62,48 @@ def _ranges(starts: IntArray, stops: IntArray) -> tuple[IntArray, IntArray]:
     return owners, firsts + np.arange(total, dtype=np.int64)
 
 
-def _sweep(
-    lo_a: FloatArray, hi_a: FloatArray, lo_b: FloatArray, axis: int, pad: float, strict: bool
-) -> tuple[IntArray, IntArray]:
-    """Pairs ``(i, j)``: box ``j`` of b starts inside box ``i`` of a along ``axis`` (after ``i``'s start).
+def _cell_pairs(lo: FloatArray, hi: FloatArray, pad: float) -> tuple[IntArray, IntArray]:
+    """Candidate pairs ``(i, j)``, ``i != j``, of boxes that may overlap once widened by ``pad``.
 
-    ``strict``: the start of ``j`` must be strictly after that of ``i`` (ties go to the
-    other direction of the sweep, so that no pair is found twice).
+    A few boxes: every pair. Many: the pairs sharing a cell of a uniform grid, each box in
+    every cell that its corners, moved out by ``pad``, reach (``floor((x - o) / h)``: each
+    step rounds monotonically, so two boxes that pass :func:`_touch` share a cell). The
+    cells are about as large as the typical box, doubled while the boxes would fill more
+    than 8 cells each on average (a few long boxes among many small ones). A pair sharing
+    several cells comes several times.
     """
-    order = np.argsort(lo_b[:, axis], kind="stable")
-    keys = lo_b[order, axis]
-    starts = np.searchsorted(keys, lo_a[:, axis], side="right" if strict else "left")
-    stops = np.searchsorted(keys, hi_a[:, axis] + pad, side="right")
-    owners, positions = _ranges(starts.astype(np.int64), stops.astype(np.int64))
-    return owners, order[positions].astype(np.int64)
+    n, dim = lo.shape
+    if n <= 64 or dim == 0:
+        i, j = np.triu_indices(n, 1)
+        return i.astype(np.int64), j.astype(np.int64)
+    low, high = lo - pad, hi + pad
+    origin = low.min(axis=0)
+    span = float(np.max(high.max(axis=0) - origin))
+    h = max(float(np.median(np.max(high - low, axis=1))), span / 2.0 ** min(19, 60 // dim))
+    if not h > 0.0:  # every box one and the same point
+        h = 1.0
+    for _ in range(64):  # h doubles: within 64 rounds one cell holds everything
+        c0 = np.floor((low - origin) / h).astype(np.int64)
+        c1 = np.floor((high - origin) / h).astype(np.int64)
+        counts = c1 - c0 + 1
+        per_box = np.prod(counts, axis=1)
+        if int(per_box.sum()) <= 8 * n + 64:
+            break
+        h *= 2.0
+    owner = np.repeat(np.arange(n, dtype=np.int64), per_box)
+    local = np.arange(owner.shape[0], dtype=np.int64) - np.repeat(np.cumsum(per_box) - per_box, per_box)
+    sizes = c1.max(axis=0) + 1
+    strides = np.concatenate([np.cumprod(sizes[::-1])[::-1][1:], [1]]).astype(np.int64)
+    key = np.zeros(owner.shape[0], dtype=np.int64)
+    for axis in range(dim - 1, -1, -1):  # the cell of each incidence, axis by axis (mixed radix)
+        width = counts[owner, axis]
+        key += (c0[owner, axis] + local % width) * strides[axis]
+        local //= width
+    order = np.argsort(key, kind="stable")
+    sk = key[order]
+    first, second = _ranges(np.arange(1, sk.shape[0] + 1, dtype=np.int64),
+                            np.searchsorted(sk, sk, side="right").astype(np.int64))
+    return owner[order[first]], owner[order[second]]
 
 
 def _touch(lo_a: FloatArray, hi_a: FloatArray, lo_b: FloatArray, hi_b: FloatArray,
@@ -139,8 +145,7 @@ def box_pairs(lows: object, highs: object, *, pad: float = 0.0) -> IntArray:
     """
     lo, hi = _boxes(lows, highs, "the boxes")
     p = _pad(pad)
-    axis = _sweep_axis(lo, hi, p)
-    i, j = _sweep(lo, hi, lo, axis, p, strict=False)
+    i, j = _cell_pairs(lo, hi, p)
     a, b = np.minimum(i, j), np.maximum(i, j)
     keep = (a != b) & _touch(lo, hi, lo, hi, a, b, p)  # the lower index as ``a`` (one rounding)
     return _unique_pairs(a[keep], b[keep])
@@ -182,10 +187,14 @@ def box_pairs_between(lows_a: object, highs_a: object, lows_b: object, highs_b: 
     p = _pad(pad)
     if lo_a.shape[0] == 0 or lo_b.shape[0] == 0:
         return np.empty((0, 2), dtype=np.int64)
-    axis = _sweep_axis(np.vstack([lo_a, lo_b]), np.vstack([hi_a, hi_b]), p)
-    i1, j1 = _sweep(lo_a, hi_a, lo_b, axis, p, strict=False)  # b starts at or after a
-    j2, i2 = _sweep(lo_b, hi_b, lo_a, axis, p, strict=True)  # a starts strictly after b
-    i, j = np.concatenate([i1, i2]), np.concatenate([j1, j2])
+    na = lo_a.shape[0]
+    if na * lo_b.shape[0] <= 2016:  # a few boxes: every pair
+        i, j = np.divmod(np.arange(na * lo_b.shape[0], dtype=np.int64), lo_b.shape[0])
+    else:  # both sets in one grid; a pair across the sets in either order
+        x, y = _cell_pairs(np.vstack([lo_a, lo_b]), np.vstack([hi_a, hi_b]), p)
+        across = (x < na) != (y < na)
+        x, y = x[across], y[across]
+        i, j = np.minimum(x, y), np.maximum(x, y) - na
     keep = _touch(lo_a, hi_a, lo_b, hi_b, i, j, p)
     return _unique_pairs(i[keep], j[keep])
 
@@ -245,8 +254,8 @@ def cluster_points(
     if not np.all(np.isfinite(pts)):
         raise InvalidInputError("expected finite points; received NaN or inf")
     p = _pad(tol)
-    # a few points: every pair (a grid has a fixed cost of some 0.2 ms, more than their distances)
-    close = np.stack(np.triu_indices(pts.shape[0], 1), axis=1) if pts.shape[0] <= 64 else _grid_pairs(pts, p)
+    i, j = _cell_pairs(pts, pts, p)
+    close = np.stack([np.minimum(i, j), np.maximum(i, j)], axis=1)
     if close.shape[0]:
         diff = pts[close[:, 0]] - pts[close[:, 1]]
         near = np.flatnonzero(np.abs(diff).max(axis=1) <= p)  # no coordinate apart by more than tol
@@ -257,54 +266,6 @@ def cluster_points(
             f"expected links between point indices 0..{pts.shape[0] - 1}; received {extra.tolist()}"
         )
     return _components(pts.shape[0], np.vstack([close, extra]))
-
-
-def _grid_pairs(pts: FloatArray, tol: float) -> IntArray:
-    """Candidate pairs ``(i, j)`` of points that may lie within ``tol``: those in neighbouring grid cells.
-
-    The cells are cubes of side ``h >= 2 tol`` (at most about a million of them along
-    each axis), so two points within ``tol`` lie in cells at most one apart on every axis,
-    whatever the rounding of ``(p - lo) / h``. Each point is paired with the later points of
-    its own cell and with every point of half of its neighbouring cells (the other half
-    pairs from the other side). Unlike a sweep along one axis, points sharing a
-    coordinate (copies of a part on a row, an axis-aligned grid) cost nothing extra: the
-    candidates grow with the points per cell, not per column.
-    """
-    n, dim = pts.shape
-    if n < 2 or dim == 0:
-        return np.empty((0, 2), dtype=np.int64)
-    lo = pts.min(axis=0)
-    span = float(np.max(pts.max(axis=0) - lo))
-    per_axis = float(2 ** min(20, 60 // dim))  # cells per axis: the keys below fit in int64
-    h = 2.0 * max(tol, span / per_axis)
-    if not h > 0.0:  # one point repeated, tol 0: one cell
-        h = 1.0
-    cells = np.floor((pts - lo) / h).astype(np.int64) + 1  # >= 1: a neighbour's index is never < 0
-    sizes = cells.max(axis=0) + 2
-    strides = np.concatenate([np.cumprod(sizes[::-1])[::-1][1:], [1]]).astype(np.int64)
-    key = cells @ strides
-    order = np.argsort(key, kind="stable")
-    sk = key[order]
-    position = np.arange(n, dtype=np.int64)
-    own_i, own_j = _ranges(position + 1, np.searchsorted(sk, sk, side="right").astype(np.int64))
-    found_i, found_j = [own_i], [own_j]
-    for step in _half_neighbours(dim):
-        target = sk + int(np.dot(step, strides))
-        starts = np.searchsorted(sk, target, side="left").astype(np.int64)
-        stops = np.searchsorted(sk, target, side="right").astype(np.int64)
-        i, j = _ranges(starts, stops)
-        found_i.append(i)
-        found_j.append(j)
-    return np.stack([order[np.concatenate(found_i)], order[np.concatenate(found_j)]], axis=1)
-
-
-@functools.cache
-def _half_neighbours(dim: int) -> tuple[tuple[int, ...], ...]:
-    """The offsets in ``{-1, 0, 1}^dim`` whose first non-zero entry is +1 (half of the neighbours)."""
-    return tuple(
-        step for step in itertools.product((-1, 0, 1), repeat=dim)
-        if any(step) and next(c for c in step if c) == 1
-    )
 
 
 def _components(n: int, edges: IntArray) -> IntArray:

@@ -40,7 +40,21 @@ def test_box_pairs_between_equal_all_pairs(seed):
     assert box_pairs_between(lo_a, hi_a, lo_b, hi_b, pad=0.1).tolist() == want
 
 
-def test_sweep_work_grows_with_nearby_pairs_not_all_pairs():
+def test_rows_of_boxes_sharing_a_coordinate_range_give_few_candidates():
+    # 100 rows of 100 unit boxes, side by side: every column shares its x range with 100 boxes
+    # (a sweep along x or y meets 5,000 candidates per column); grid cells hold a box and its
+    # neighbours
+    from relief_cad.broadphase import _cell_pairs
+
+    x, y = np.meshgrid(np.arange(100.0) * 1.5, np.arange(100.0) * 1.5)
+    lo = np.column_stack([x.ravel(), y.ravel()])
+    candidates, _ = _cell_pairs(lo, lo + 1.0, 0.0)
+    assert candidates.shape[0] <= 20 * lo.shape[0]
+    assert box_pairs(lo, lo + 1.0).shape == (0, 2)  # 0.5 apart: none touch
+    assert box_pairs(lo, lo + 1.0, pad=0.5).shape == (2 * 100 * 99 + 2 * 99 * 99, 2)  # sides and corners
+
+
+def test_grid_work_grows_with_nearby_pairs_not_all_pairs():
     # 20,000 unit boxes along a line: ~2 neighbours each; an all-pairs test would need 2e8 checks
     n = 20000
     lo = np.stack([np.arange(n, dtype=float) * 0.9, np.zeros(n)], axis=1)
@@ -52,12 +66,12 @@ def test_sweep_work_grows_with_nearby_pairs_not_all_pairs():
 def test_cluster_candidates_grow_with_nearby_points_not_shared_coordinates():
     # 40,000 points on a 200 x 200 grid: a sweep along x pairs the 200 points of each column
     # (4 million candidates); grid cells give each point its few real neighbours
-    from relief_cad.broadphase import _grid_pairs
+    from relief_cad.broadphase import _cell_pairs
 
     x, y = np.meshgrid(np.arange(200.0), np.arange(200.0))
     pts = np.column_stack([x.ravel(), y.ravel(), np.zeros(x.size)])
     pts = np.vstack([pts, pts[:100] + 1e-9])  # 100 near duplicates
-    candidates = _grid_pairs(pts, 1e-6)
+    candidates, _ = _cell_pairs(pts, pts, 1e-6)
     assert candidates.shape[0] <= 2 * pts.shape[0]
     labels = cluster_points(pts, 1e-6)
     assert labels.max() + 1 == 40000
