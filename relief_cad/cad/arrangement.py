@@ -90,6 +90,7 @@ class _Graph:
     tol: float = 0.0
     flavour: str = "ocp"
     frame: np.ndarray | None = None  # the common 2D frame of all edges (see api._common_frame), if any
+    values: _Values | None = None  # curve points of the edges (one adaptor per edge, for every use)
 
 
 @contextmanager
@@ -118,6 +119,7 @@ def _graph(a: Any, b: Any, tol: float | None) -> tuple[_Graph, int]:
     _, raws, ftol, infos = api._run(edges_a, None if b is None else edges_b, tol)
     graph = _Graph(edges_a + edges_b, set(), tol=ftol, flavour=flavour.flavour_of(a))
     graph.frame = infos[0].frame
+    graph.values = values = _Values(graph.edges)
     offset = len(edges_a)
     _add_ends(graph)
     for r in raws:
@@ -126,8 +128,7 @@ def _graph(a: Any, b: Any, tol: float | None) -> tuple[_Graph, int]:
         if r.kind == "overlap":
             graph.overlaps += 1
             for t, u in zip(r.t, r.u, strict=True):
-                p = ocp.edge_value(graph.edges[i], t)
-                _add_pair(graph, i, t, j, u, p)
+                _add_pair(graph, i, t, j, u, values(i, t))
         else:
             _add_pair(graph, i, r.t, j, r.u, r.point)
     return graph, offset
@@ -143,13 +144,14 @@ def _add_ends(graph: _Graph) -> None:
     """Both ends of every edge are cuts; ends sharing one ``TopoDS_Vertex`` are linked."""
     vmap = TopTools_IndexedMapOfShape()
     first_cut: dict[int, int] = {}  # vertex index in vmap -> first cut at it
+    values = _values(graph)
     for k, edge in enumerate(graph.edges):
         if BRep_Tool.Degenerated_s(edge):
             graph.skip.add(k)
             continue
         t0, t1 = BRep_Tool.Range_s(edge)
         for t, v in ((t0, TopExp.FirstVertex_s(edge)), (t1, TopExp.LastVertex_s(edge))):
-            graph.cuts.append(_Cut(k, t, ocp.edge_value(edge, t)))
+            graph.cuts.append(_Cut(k, t, values(k, t)))
             if v.IsNull():
                 continue
             index = vmap.Add(v)
@@ -172,6 +174,12 @@ class _Values:
         if adaptor is None:
             adaptor = self._adaptors[k] = BRepAdaptor_Curve(self._edges[k])
         return adaptor.Value(t).Coord()  # type: ignore[no-any-return]
+
+
+def _values(graph: _Graph) -> _Values:
+    if graph.values is None:
+        graph.values = _Values(graph.edges)
+    return graph.values
 
 
 def _vertices(graph: _Graph, values: _Values) -> tuple[np.ndarray, list[Any], np.ndarray]:
@@ -225,6 +233,7 @@ class _Piece:
     mid: tuple[float, float, float]
     curve: Any
     t: tuple[float, float]
+    twin: bool = False  # the edge of an earlier piece (an overlap), reused
 
 
 def _edge_pieces(k: int, graph: _Graph, places: list[tuple[float, int]], vertices: list[Any],
@@ -263,7 +272,7 @@ def _same_piece(p: _Piece, q: _Piece, tol: float) -> bool:
 
 def _pieces(graph: _Graph) -> tuple[list[list[_Piece]], list[Any], np.ndarray]:
     """Every edge's pieces, an overlap's second copy replaced by the first one (same TopoDS_Edge)."""
-    values = _Values(graph.edges)
+    values = _values(graph)
     labels, vertices, centres = _vertices(graph, values)
     places: dict[int, list[tuple[float, int]]] = {}
     for cut, label in zip(graph.cuts, labels.tolist(), strict=True):
@@ -281,7 +290,7 @@ def _pieces(graph: _Graph) -> tuple[list[list[_Piece]], list[Any], np.ndarray]:
                 closed = twin.nodes[0] == twin.nodes[1]
                 reverse = twin.nodes != piece.nodes or (closed and not _same_way(twin, piece))
                 shared = downcast_edge(twin.edge.Reversed()) if reverse else twin.edge
-                pieces[n] = _Piece(shared, piece.nodes, piece.mid, twin.curve, twin.t)
+                pieces[n] = _Piece(shared, piece.nodes, piece.mid, twin.curve, twin.t, twin=True)
         out.append(pieces)
     return out, vertices, centres
 
@@ -358,14 +367,8 @@ def _touches(face: Any, frame_edges: Any) -> bool:
 
 # --------------------------------------------------------------------------- public API
 def _unique(pieces: list[list[_Piece]]) -> list[TopoDS_Edge]:
-    seen = TopTools_IndexedMapOfShape()
-    out = []
-    for edge_pieces in pieces:
-        for p in edge_pieces:
-            if not seen.Contains(p.edge):
-                seen.Add(p.edge)
-                out.append(downcast_edge(p.edge.Oriented(TopAbs_FORWARD)))
-    return out
+    """Every piece once (a twin is an earlier piece's edge), as made: forward."""
+    return [p.edge for edge_pieces in pieces for p in edge_pieces if not p.twin]
 
 
 def arrange(shapes: Any, *, tol: float | None = None, faces: bool = False) -> Any:
