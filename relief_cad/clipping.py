@@ -256,14 +256,14 @@ _MIN_CHUNK = 256  # pairs per thread, at least: below that a thread costs more t
 
 
 def batch_rows(points: FloatArray, weights: FloatArray, offsets: NDArray[np.int64], pairs: NDArray[np.int64],
-               tols: FloatArray, budget: int, workers: int = 1) -> FloatArray:
+               tols: FloatArray, budget: int, workers: int | None = None) -> FloatArray:
     """Run the batch kernel on packed pairs, split into chunks over ``workers`` threads: all rows.
 
     The arrays are those of :func:`intersect_packed`, already checked (``points`` and
-    ``weights`` read-only); ``tols`` holds each pair's tolerance (model units). The kernel
-    runs without the GIL, so the chunks run at once; their rows are joined in pair order
-    (column 0 indexes ``pairs``), the same rows for any ``workers``. An exception is that of
-    the first chunk, in order, that raised.
+    ``weights`` read-only); ``tols`` holds each pair's tolerance (model units); ``workers``
+    None is every core. The kernel runs without the GIL, so the chunks run at once; their
+    rows are joined in pair order (column 0 indexes ``pairs``), the same rows for any
+    ``workers``. An exception is that of the first chunk, in order, that raised.
 
     >>> pts = np.array([[0.0, 0.0], [2.0, 2.0], [0.0, 2.0], [2.0, 0.0]])
     >>> pts.flags.writeable = False
@@ -275,7 +275,8 @@ def batch_rows(points: FloatArray, weights: FloatArray, offsets: NDArray[np.int6
     ((600, 9), [599.0, 0.0, 0.5, 0.5])
     """
     n = pairs.shape[0]
-    size = n if workers <= 1 or n < 2 * _MIN_CHUNK else max(_MIN_CHUNK, -(-n // workers))
+    threads = 1 if n < 2 * _MIN_CHUNK else check_workers(workers)  # a few pairs: no pool
+    size = n if threads <= 1 else max(_MIN_CHUNK, -(-n // threads))
     if size >= n:
         rows: FloatArray = intersect_batch_kernel(points, weights, offsets, pairs, tols, budget)
         return rows
@@ -288,7 +289,7 @@ def batch_rows(points: FloatArray, weights: FloatArray, offsets: NDArray[np.int6
         return part
 
     starts = range(0, n, size)
-    with ThreadPoolExecutor(max_workers=min(workers, len(starts))) as pool:
+    with ThreadPoolExecutor(max_workers=min(threads, len(starts))) as pool:
         return np.concatenate(list(pool.map(chunk, starts)))
 
 

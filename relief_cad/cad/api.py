@@ -45,7 +45,6 @@ import numpy as np
 from OCP.BRep import BRep_Tool
 from OCP.TopExp import TopExp
 
-from .._checks import check_workers
 from .._kernels import KIND_CROSSING, KIND_TANGENT, KIND_UNRESOLVED
 from ..broadphase import box_pairs, box_pairs_between
 from ..clipping import batch_rows
@@ -451,10 +450,12 @@ def _planar_arrays(e: _EdgeInfo) -> _Packed:
     return e._packed
 
 
-def _pack_edges(infos: list[_EdgeInfo]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, list[int]]:
+def _pack_edges(
+    infos: list[_EdgeInfo],
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[list[float]], list[int]]:
     """The segments of the edges packed for the batch kernel: ``P, W, offsets, ends, starts``.
 
-    ``ends`` holds the space end points of every packed curve (rows of 6), ``starts[k]`` the
+    ``ends`` holds the space end points of every packed curve (lists of 6), ``starts[k]`` the
     index of edge ``k``'s first segment among the packed curves.
     """
     pts: list[list[float]] = []
@@ -474,10 +475,10 @@ def _pack_edges(infos: list[_EdgeInfo]) -> tuple[np.ndarray, np.ndarray, np.ndar
     W = np.array(ws)
     P.flags.writeable = False
     W.flags.writeable = False
-    return P, W, np.array(offsets, dtype=np.int64), np.array(ends).reshape(-1, 6), starts
+    return P, W, np.array(offsets, dtype=np.int64), ends, starts
 
 
-def _pack(jobs: list[_Job]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def _pack(jobs: list[_Job]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, list[list[float]]]:
     """The jobs' edges packed (every edge once, in order of first use): ``P, W, offsets, pairs, ends``.
 
     ``pairs`` are the jobs' segment pairs as indices of packed curves.
@@ -494,20 +495,34 @@ def _pack(jobs: list[_Job]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndar
     return P, W, offsets, np.array(pairs, dtype=np.int64).reshape(-1, 2), ends
 
 
-def _ends_meet_packed(ends: np.ndarray, pairs: np.ndarray, tol: float) -> np.ndarray:
+def _ends_meet_packed(ends: list[list[float]], pairs: np.ndarray, tol: float) -> np.ndarray:
     """Flag the packed pairs whose segments' ends meet: both within ``tol`` of the other's (bools).
 
     Nearness is the largest coordinate difference. Such pairs may coincide (a duplicate
     edge), the clipping's slowest case: they go through ``relief_cad.intersect``, which
-    answers coincident curves before clipping.
+    answers coincident curves before clipping. A few pairs are tested on Python floats
+    (numpy's cost per call is more than theirs), many in one numpy pass: the same
+    subtractions and comparisons.
     """
-    a, b = ends[pairs[:, 0]], ends[pairs[:, 1]]
+    if pairs.shape[0] <= 32:
+        return np.array([_ends_meet(ends[i], ends[j], tol) for i, j in pairs.tolist()], dtype=bool)
+    rows = np.array(ends).reshape(-1, 6)
+    a, b = rows[pairs[:, 0]], rows[pairs[:, 1]]
 
     def near(p: np.ndarray, q: np.ndarray) -> np.ndarray:
         return np.abs(p - q).max(axis=1) <= tol  # type: ignore[no-any-return]
 
     a0, a1, b0, b1 = a[:, :3], a[:, 3:], b[:, :3], b[:, 3:]
     return (near(a0, b0) & near(a1, b1)) | (near(a0, b1) & near(a1, b0))  # type: ignore[no-any-return]
+
+
+def _ends_meet(a: list[float], b: list[float], tol: float) -> bool:
+    """:func:`_ends_meet_packed` for one pair of segments' end points ``[x0, y0, z0, x1, y1, z1]``."""
+    d00 = max(abs(a[0] - b[0]), abs(a[1] - b[1]), abs(a[2] - b[2])) <= tol
+    d11 = max(abs(a[3] - b[3]), abs(a[4] - b[4]), abs(a[5] - b[5])) <= tol
+    d01 = max(abs(a[0] - b[3]), abs(a[1] - b[4]), abs(a[2] - b[5])) <= tol
+    d10 = max(abs(a[3] - b[0]), abs(a[4] - b[1]), abs(a[5] - b[2])) <= tol
+    return (d00 and d11) or (d01 and d10)
 
 
 def _solve_packed(jobs: list[_Job], tol: float) -> list[list[_Found] | None]:
@@ -522,7 +537,7 @@ def _solve_packed(jobs: list[_Job], tol: float) -> list[list[_Found] | None]:
 
 
 def _batch_found(
-    P: np.ndarray, W: np.ndarray, offsets: np.ndarray, pairs: np.ndarray, ends: np.ndarray, tol: float,
+    P: np.ndarray, W: np.ndarray, offsets: np.ndarray, pairs: np.ndarray, ends: list[list[float]], tol: float,
     pair_of: Callable[[int], tuple[_EdgeInfo, int, _EdgeInfo, int]],
 ) -> list[list[_Found] | None]:
     """The batch kernel on packed segment pairs: every pair's results by ``t``, None where the ends meet.
@@ -533,7 +548,7 @@ def _batch_found(
     rows: list[list[float]] = []
     if run.size:
         tols = np.full(run.shape[0], tol)
-        rows = batch_rows(P, W, offsets, pairs[run], tols, DEFAULT_BUDGET, check_workers(None)).tolist()
+        rows = batch_rows(P, W, offsets, pairs[run], tols, DEFAULT_BUDGET).tolist()  # on every core
     out: list[list[_Found] | None] = [None] * pairs.shape[0]
     which = run.tolist()
     for k in which:
