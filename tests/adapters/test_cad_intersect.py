@@ -248,6 +248,21 @@ def test_one_sweep_over_all_segments_finds_what_edge_pairs_find(monkeypatch, two
     check_on_edges(swept, tol=1e-7)
 
 
+def test_end_meeting_test_is_the_same_on_floats_and_in_numpy():
+    # a few pairs are tested on Python floats, many in one numpy pass: the same verdicts
+    rng = np.random.default_rng(3)
+    ends = np.round(rng.random((40, 6)) * 4, 1)
+    ends[1:20:2] = ends[0:20:2][:, [3, 4, 5, 0, 1, 2]] + rng.choice([0.0, 0.05, 0.2], (10, 1))  # reversed
+    ends[21:40:2] = ends[20:40:2] + rng.choice([0.0, 0.05, 0.2], (10, 1))
+    pairs = np.array([(i, j) for i in range(40) for j in range(40)])
+    tol = 0.1
+    many = api._ends_meet_packed(ends.tolist(), pairs, tol)
+    assert 20 <= many.sum() < len(pairs) // 2
+    few = np.concatenate([api._ends_meet_packed(ends.tolist(), pairs[k:k + 20], tol)
+                          for k in range(0, len(pairs), 20)])
+    assert np.array_equal(few, many)
+
+
 # ----------------------------------------------------------------------------- once only
 def test_shared_vertex_reported_once():
     a = seg(XY, (0, 0), (1, 1))
