@@ -777,7 +777,7 @@ def _close_edge_pairs(infos_a: list[_EdgeInfo], infos_b: list[_EdgeInfo], tol: f
                 if all(lo_a[k] - tol <= hi_b[k] and lo_b[k] - tol <= hi_a[k] for k in range(3)):
                     out.append((ia, ib))
         return out
-    # sort-and-sweep (relief_cad.broadphase): cost grows with the nearby pairs, not with all pairs
+    # a grid of the boxes (relief_cad.broadphase): cost grows with the nearby pairs, not with all pairs
     return box_pairs_between(
         [e.lo for e in infos_a], [e.hi for e in infos_a], [e.lo for e in infos_b], [e.hi for e in infos_b],
         pad=tol,
@@ -797,7 +797,7 @@ def _segment_boxes(infos: list[_EdgeInfo]) -> tuple[np.ndarray, np.ndarray, np.n
 def _model_jobs(
     infos_a: list[_EdgeInfo], infos_b: list[_EdgeInfo], self_mode: bool, tol: float
 ) -> tuple[list[_Job], list[list[_Found] | None]]:
-    """The planar jobs of many edges, from one sweep over all segment boxes, with the batch kernel's answers.
+    """The planar jobs of many edges, from one broad phase over all segment boxes, with the kernel's answers.
 
     The same jobs in the same order as the edge-pair path of :func:`_run` (edge pairs in order,
     then segment pairs; a box pair tested with the lower index first), but a pair gets a
@@ -841,9 +841,9 @@ def _model_jobs(
     return jobs, answers
 
 
-# above this many edge pairs, planar jobs come from one sweep over all segments (:func:`_model_jobs`);
+# above this many edge pairs, planar jobs come from one broad phase over all segments (:func:`_model_jobs`);
 # below, edge pair by edge pair (:func:`_close_edge_pairs`, :func:`_pair_jobs`): the same jobs
-_SWEEP_ABOVE = 16
+_ONE_PASS_ABOVE = 16
 
 
 def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float, list[_EdgeInfo]]:
@@ -860,7 +860,7 @@ def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float, lis
         else check_model_tol(tol, [e.edge for e in everyone])
     frame = _common_frame(everyone, ftol, box)
     _set_plane(everyone, frame)
-    if frame is not None and len(infos_a) * len(infos_b) > _SWEEP_ABOVE:  # many planar edges: one sweep
+    if frame is not None and len(infos_a) * len(infos_b) > _ONE_PASS_ABOVE:  # many planar edges: one pass
         jobs, known = _model_jobs(infos_a, infos_b, b is None, ftol)
         answers = _solve(jobs, ftol, b is None, known)
     else:

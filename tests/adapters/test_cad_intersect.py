@@ -236,12 +236,12 @@ def _rows(results: list) -> list[tuple]:
 
 
 @pytest.mark.parametrize("two_sets", [False, True])
-def test_one_sweep_over_all_segments_finds_what_edge_pairs_find(monkeypatch, two_sets):
+def test_one_pass_over_all_segments_finds_what_edge_pairs_find(monkeypatch, two_sets):
     a, b = _busy_sketch()
     args = (a, b) if two_sets else (a + b,)
-    assert len(args[0]) * len(args[-1]) > api._SWEEP_ABOVE  # the sweep runs
+    assert len(args[0]) * len(args[-1]) > api._ONE_PASS_ABOVE  # the one pass runs
     swept = api.intersections(*args)
-    monkeypatch.setattr(api, "_SWEEP_ABOVE", 10**9)  # edge pair by edge pair
+    monkeypatch.setattr(api, "_ONE_PASS_ABOVE", 10**9)  # edge pair by edge pair
     assert _rows(swept) == _rows(api.intersections(*args))
     kinds = {type(r).__name__ for r in swept} | {getattr(r, "kind", "") for r in swept}
     assert {"EdgeOverlap", "crossing", "tangent"} <= kinds  # the core's post-pass ran too

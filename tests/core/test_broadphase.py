@@ -1,4 +1,4 @@
-"""relief_cad.broadphase: sort-and-sweep pairs against all-pairs testing, point clusters against brute force."""
+"""relief_cad.broadphase: grid pairs against all-pairs testing, point clusters against brute force."""
 
 from __future__ import annotations
 
@@ -33,7 +33,7 @@ def test_box_pairs_between_equal_all_pairs(seed):
     hi_a = lo_a + rng.random(lo_a.shape)
     lo_b = rng.random((int(rng.integers(1, 80)), 3)) * 10
     k = min(3, len(lo_a), len(lo_b))
-    lo_b[:k] = lo_a[:k]  # equal starts on the sweep axis are found once
+    lo_b[:k] = lo_a[:k]  # equal corners: each pair found once
     hi_b = lo_b + rng.random(lo_b.shape)
     want = [[i, j] for i in range(len(lo_a)) for j in range(len(lo_b))
             if np.all((lo_a[i] - 0.1 <= hi_b[j]) & (lo_b[j] <= hi_a[i] + 0.1))]
