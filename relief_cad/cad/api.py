@@ -805,11 +805,12 @@ def _model_jobs(
     against itself, segments whose ends meet. The answers: the kernel's, None for the core.
     """
     everyone = infos_a if self_mode else infos_a + infos_b
-    P, W, offsets, ends, _ = _pack_edges(everyone)
+    P, W, offsets, ends, _ = _pack_edges(everyone)  # packed curve g is segment g of the boxes below
     lo, hi, edge, seg = _segment_boxes(everyone)
     if self_mode:
         pairs = box_pairs(lo, hi, pad=tol)
-        selves = [g for g in range(lo.shape[0]) if not _cannot_cross_itself(infos_a[edge[g]].rows[seg[g]])]
+        selves = [(k, i) for k, e in enumerate(infos_a) for i, rows in enumerate(e.rows)
+                  if not _cannot_cross_itself(rows)]
     else:
         na = sum(len(e.lows) for e in infos_a)
         pairs = box_pairs_between(lo[:na], hi[:na], lo[na:], hi[na:], pad=tol)
@@ -827,7 +828,7 @@ def _model_jobs(
     keys = [
         (edge_l[ga[k]], edge_l[gb[k]], seg_l[ga[k]], seg_l[gb[k]], k) for k, f in enumerate(found) if f != []
     ]
-    keys += [(edge_l[g], edge_l[g], seg_l[g], seg_l[g], -1) for g in selves]
+    keys += [(k, k, i, i, -1) for k, i in selves]
     jobs: list[_Job] = []
     answers: list[list[_Found] | None] = []
     for ia, ib, i, j, k in sorted(keys):

@@ -90,7 +90,10 @@ class _Graph:
     tol: float = 0.0
     flavour: str = "ocp"
     frame: np.ndarray | None = None  # the common 2D frame of all edges (see api._common_frame), if any
-    values: _Values | None = None  # curve points of the edges (one adaptor per edge, for every use)
+    values: _Values = field(init=False)  # curve points of the edges (one adaptor per edge, for every use)
+
+    def __post_init__(self) -> None:
+        self.values = _Values(self.edges)
 
 
 @contextmanager
@@ -119,7 +122,7 @@ def _graph(a: Any, b: Any, tol: float | None) -> tuple[_Graph, int]:
     _, raws, ftol, infos = api._run(edges_a, None if b is None else edges_b, tol)
     graph = _Graph(edges_a + edges_b, set(), tol=ftol, flavour=flavour.flavour_of(a))
     graph.frame = infos[0].frame
-    graph.values = values = _Values(graph.edges)
+    values = graph.values
     offset = len(edges_a)
     _add_ends(graph)
     for r in raws:
@@ -144,7 +147,7 @@ def _add_ends(graph: _Graph) -> None:
     """Both ends of every edge are cuts; ends sharing one ``TopoDS_Vertex`` are linked."""
     vmap = TopTools_IndexedMapOfShape()
     first_cut: dict[int, int] = {}  # vertex index in vmap -> first cut at it
-    values = _values(graph)
+    values = graph.values
     for k, edge in enumerate(graph.edges):
         if BRep_Tool.Degenerated_s(edge):
             graph.skip.add(k)
@@ -174,12 +177,6 @@ class _Values:
         if adaptor is None:
             adaptor = self._adaptors[k] = BRepAdaptor_Curve(self._edges[k])
         return adaptor.Value(t).Coord()  # type: ignore[no-any-return]
-
-
-def _values(graph: _Graph) -> _Values:
-    if graph.values is None:
-        graph.values = _Values(graph.edges)
-    return graph.values
 
 
 def _vertices(graph: _Graph, values: _Values) -> tuple[np.ndarray, list[Any], np.ndarray]:
@@ -272,7 +269,7 @@ def _same_piece(p: _Piece, q: _Piece, tol: float) -> bool:
 
 def _pieces(graph: _Graph) -> tuple[list[list[_Piece]], list[Any], np.ndarray]:
     """Every edge's pieces, an overlap's second copy replaced by the first one (same TopoDS_Edge)."""
-    values = _values(graph)
+    values = graph.values
     labels, vertices, centres = _vertices(graph, values)
     places: dict[int, list[tuple[float, int]]] = {}
     for cut, label in zip(graph.cuts, labels.tolist(), strict=True):
