@@ -11,6 +11,7 @@ from __future__ import annotations
 import os
 
 from Cython.Build import cythonize
+from Cython.Compiler import Options
 from setuptools import Extension, setup
 
 MODULES = ("bezier", "clip", "certify", "polish", "planar", "batch", "space")
@@ -33,6 +34,12 @@ DIRECTIVES = {
     "infer_types": True,
     "embedsignature": True,
 }
+
+# every memoryview of the kernels has 1 or 2 dimensions: Cython's slice struct keeps its shape,
+# strides and suboffsets for this many (default 8: 208 bytes per slice, zeroed on entry to each
+# function for every view it holds; the pair driver holds 43). 3 is the least Cython accepts for
+# 2 dimensions
+Options.buffer_max_dims = 3
 
 extensions = [
     Extension(f"relief_cad._kernels.{name}", [f"relief_cad/_kernels/{name}.py"],
