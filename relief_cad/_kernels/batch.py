@@ -15,7 +15,7 @@ from cython.cimports.libc.math import fabs, sqrt
 
 from .bezier import _grow
 from .constants import RES_COLS
-from .planar import _apart, _box, _pair_core, intersect_pair_kernel, scratch_rows
+from .planar import _apart, _box, _pair_core, scratch_rows
 
 _NO_ROWS = np.empty((0, RES_COLS))
 _NO_ROWS.flags.writeable = False
@@ -161,24 +161,55 @@ def ends_match(
     return _ends_match(PA, PB, lim)
 
 
+# the scratch buffer of intersect_one_kernel, kept between calls (an allocation and its view cost
+# about half a microsecond, a quarter of a small pair's kernel time); None while a call uses it,
+# so that a call made meanwhile (another thread: the kernel runs without the GIL) makes its own
+_spare = cython.declare(object, None)
+_SPARE_ROWS = cython.declare(cython.Py_ssize_t, 256)
+
+
 def intersect_one_kernel(
     PA: cython.const[cython.double][:, :],
     WA: cython.const[cython.double][:],
     PB: cython.const[cython.double][:, :],
     WB: cython.const[cython.double][:],
     tol: cython.double,
-    budget,
+    budget: cython.longlong,
     ends_lim: cython.double = -1.0,
 ):
-    """One pair: the result rows (a single array return is cheaper to box than a tuple).
+    """One pair: its result rows, a new array (a single array return is cheaper to box than a tuple).
 
     A pair with no result (boxes apart, or nothing found) returns one shared read-only empty array.
     With ``ends_lim >= 0``, a pair whose end points match within ``ends_lim`` (:func:`_ends_match`:
     curves that may coincide all along, which the caller tests first) returns None, unsolved.
+    The pair kernel runs without the GIL in a scratch buffer kept for the next call: its first
+    rows, then room for result rows; rows that do not fit there go to a larger array, and the pair
+    runs again (the same bits).
     """
+    global _spare
     if ends_lim >= 0.0 and _ends_match(PA, PB, ends_lim):
         return None
-    # no ``res``: the pair kernel makes its result rows with its scratch buffer (one allocation);
-    # it tests the boxes itself first (boxes apart: no allocation, no rows)
-    res, nres = intersect_pair_kernel(PA, WA, PB, WB, tol, budget, 0, None, 0)
-    return res[:nres] if nres else _NO_ROWS
+    if _apart(PA, PB, tol):
+        return _NO_ROWS
+    rows: cython.Py_ssize_t = scratch_rows(PA.shape[0], PB.shape[0])
+    buf = _spare
+    _spare = None
+    if buf is None or buf.shape[0] < rows + _SPARE_ROWS:
+        buf = np.empty((rows + _SPARE_ROWS, RES_COLS))
+    res = None
+    n: cython.Py_ssize_t
+    try:
+        scratch: cython.double[:, :] = buf
+        rv: cython.double[:, :] = scratch[rows:]
+        while True:
+            with cython.nogil:
+                n = _pair_core(PA, WA, PB, WB, tol, budget, 0.0, scratch, rv, 0)
+            if n >= 0:
+                break
+            res = np.empty((-2 - n, RES_COLS))
+            rv = res
+        if n == 0:
+            return _NO_ROWS
+        return np.array(buf[rows : rows + n]) if res is None else res[:n]
+    finally:
+        _spare = buf

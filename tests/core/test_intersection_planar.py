@@ -331,3 +331,23 @@ def test_default_tolerance_follows_the_curve_not_its_control_polygon() -> None:
     # exactly: 1e-9 x the curve's own extent (its diagonal is 2 sqrt 2) + the data's rounding level
     expected = 1e-9 * 2 * np.sqrt(2) + 64 * np.finfo(float).eps * big
     assert tol == pytest.approx(expected, rel=1e-2)  # the sampled extent is a little inside the true one
+
+
+def test_concurrent_calls_give_the_serial_results() -> None:
+    """``intersect`` keeps one scratch buffer between calls and runs the kernel without the GIL:
+    calls from several threads at once must each get their own buffer (same results as serial)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    rng = np.random.default_rng(23)
+    pairs = [(RationalBezier(rng.random((int(rng.integers(2, 8)), 2))),
+              RationalBezier(rng.random((int(rng.integers(2, 8)), 2)))) for _ in range(400)]
+
+    def run(chunk: list[tuple[RationalBezier, RationalBezier]]) -> list[list[tuple[float, float, str]]]:
+        return [[(r.t, r.u, r.kind) for r in intersect(a, b)] for a, b in chunk]
+
+    serial = run(pairs)
+    assert sum(map(len, serial)) > 300
+    with ThreadPoolExecutor(4) as pool:
+        for _ in range(3):
+            parts = list(pool.map(run, [pairs[k::4] for k in range(4)]))
+            assert [parts[k % 4][k // 4] for k in range(len(pairs))] == serial
