@@ -777,8 +777,17 @@ def needs_refining(a: RationalBezier, b: RationalBezier, items: Sequence[Result]
     >>> needs_refining(line, line, [Intersection(0.5, 0.5, line(0.5), "crossing")])
     False
     """
-    return any(isinstance(r, Overlap) or r.kind == "tangent" or _singular_end(a, r.t)
-               or _singular_end(b, r.u) for r in items)
+    for r in items:  # a plain loop: this runs on every pair with results (the kind of an Overlap
+        # is "overlap"), and an end test only where a parameter is exactly 0 or 1
+        if r.kind != "crossing":
+            return True
+        t = r.t
+        if (t == 0.0 or t == 1.0) and _singular_end(a, t):
+            return True
+        u = r.u
+        if (u == 0.0 or u == 1.0) and _singular_end(b, u):
+            return True
+    return False
 
 
 def refine_contacts(a: RationalBezier, b: RationalBezier, items: Sequence[Result],

@@ -127,10 +127,10 @@ def _distribute(rows: FloatArray, order: Iterable[int], items: list[list[Result]
 
     The one place where rows become :class:`Intersection`, :class:`Overlap` and
     :class:`ParameterBox` objects; points are built without the frozen-dataclass ``__init__`` cost
-    (the hot loop of every call), their coordinates read-only rows of one copied array.
+    (the hot loop of every call), their coordinates read-only views of the rows.
     """
-    points = rows[:, 6:8].copy()
-    points.flags.writeable = False
+    points = rows[:, 6:8]  # a view of ``rows`` (the kernel's own new array) made read-only
+    points.setflags(write=False)
     lst = rows.tolist()
     new = _NEW
     for i in order:
@@ -151,8 +151,8 @@ def _distribute(rows: FloatArray, order: Iterable[int], items: list[list[Result]
             boxes[int(r[0])].append(ParameterBox(r[2], r[4], r[3], r[5]))
 
 
-def _rows_to_list(rows: FloatArray) -> IntersectionList:
-    """Build the sorted :class:`IntersectionList` of one pair's kernel result rows.
+def _rows_to_list(rows: FloatArray, tol: float = math.nan) -> IntersectionList:
+    """Build the sorted :class:`IntersectionList` of one pair's kernel result rows (``tol_used`` ``tol``).
 
     Rows are taken in the order of their ``t`` (column 2: a point's ``t``, an overlap's first
     ``t``), a stable sort, so the list is what sorting the result objects by ``t`` would give;
@@ -160,7 +160,7 @@ def _rows_to_list(rows: FloatArray) -> IntersectionList:
     """
     n = rows.shape[0]
     if n == 0:
-        return IntersectionList()
+        return IntersectionList((), (), tol)
     items: list[Result] = []
     boxes: list[ParameterBox] = []
     order: Iterable[int] = range(n)
@@ -171,7 +171,7 @@ def _rows_to_list(rows: FloatArray) -> IntersectionList:
             col = [i if k == KIND_UNRESOLVED else c for i, (k, c) in enumerate(zip(kinds, col, strict=True))]
         order = sorted(order, key=col.__getitem__)
     _distribute(rows, order, [items], [boxes])
-    return IntersectionList(items, boxes)
+    return IntersectionList(items, boxes, tol)
 
 
 def _batch_order(rows: FloatArray) -> list[int]:
@@ -384,8 +384,9 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
         check_curve(a, "a")
     if b is not None and type(b) is not RationalBezier:
         check_curve(b, "b")
-    check_on_budget(on_budget)
-    nbudget = check_budget(budget)
+    if on_budget != "raise":  # the default passes the check: skipped on the hot path
+        check_on_budget(on_budget)
+    nbudget = DEFAULT_BUDGET if budget is None else check_budget(budget)
     pa = a.control_points
     if pa.shape[1] == 3 or (b is not None and b.control_points.shape[1] == 3):
         result: IntersectionList = intersect_space(a, b, tol=tol, budget=budget, on_budget=on_budget)
@@ -407,10 +408,10 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
         if whole is not None:
             return IntersectionList([whole], tol_used=ftol)
         rows = intersect_one_kernel(pa, a.weights, pb, b.weights, ftol, nbudget)
-    res = _with_tol(_rows_to_list(rows), ftol)
-    if not res and not res.unresolved:
-        return res
-    return finish(_with_tol(_refined(a, b, res, ftol), ftol), on_budget)
+    res = _rows_to_list(rows, ftol)
+    if res.unresolved or needs_refining(a, b, res):
+        res = finish(_with_tol(_refined(a, b, res, ftol), ftol), on_budget)
+    return res
 
 
 def _with_tol(res: IntersectionList, tol: float) -> IntersectionList:
