@@ -525,12 +525,11 @@ def _planar_batch(pairs: list[tuple[RationalBezier, RationalBezier]], tols: Floa
         boxes: list[list[ParameterBox]] = [[] for _ in range(start, stop)]
         _distribute(rows, _batch_order(rows), items, boxes)
         for j in range(stop - start):
-            k, tol = start + j, used[start + j]
-            if not items[j] and not boxes[j]:
-                out[k] = IntersectionList((), (), tol)
-                continue
-            listed = _with_tol(_refined(*pairs[k], IntersectionList(items[j], boxes[j], tol), tol), tol)
-            out[k] = finish(listed, on_budget) if boxes[j] else listed
+            k = start + j
+            listed = IntersectionList(items[j], boxes[j], used[k])
+            if boxes[j] or (items[j] and needs_refining(*pairs[k], listed)):
+                listed = finish(_with_tol(_refined(*pairs[k], listed, used[k]), used[k]), on_budget)
+            out[k] = listed
 
     n = len(pairs)
     size = n if workers <= 1 or n < 2 * _MIN_CHUNK else max(_MIN_CHUNK, -(-n // (4 * workers)))
