@@ -927,7 +927,7 @@ def space_pair_kernel(
             continue
         ptol = _space_lipschitz(P2a, P2b, HA, HB, M) * (tol / scale) * (1.0 + 1e-6)
         res = np.empty((16, RES_COLS))
-        res, nres = intersect_pair_kernel(P2a_arr, W2a_arr, P2b_arr, W2b_arr, ptol, budget, 0, res, 0)
+        res, nres = intersect_pair_kernel(P2a, W2a, P2b, W2b, ptol, budget, 0, res, 0)
         rv = res
         artefact = False
         nout = 0
