@@ -216,8 +216,9 @@ def intersect_packed(points: FloatArray, weights: FloatArray, offsets: FloatArra
     Returns
     -------
     ndarray, shape (r, 9)
-        Rows with :data:`RESULT_COLUMNS`, grouped by pair in pair order (within a
-        pair not sorted).
+        Rows with :data:`RESULT_COLUMNS`, grouped by pair in pair order; within a
+        pair, points and overlaps by ``t`` (an overlap by its first ``t``), then the
+        unresolved boxes.
 
     Examples
     --------

@@ -83,7 +83,6 @@ from ._kernels import (
     KIND_CROSSING,
     KIND_OVERLAP,
     KIND_TANGENT,
-    KIND_UNRESOLVED,
     ends_match,
     intersect_batch_kernel,
     intersect_one_kernel,
@@ -121,9 +120,8 @@ _NEW = object.__new__
 _KIND_NAMES: tuple[Literal["crossing"], Literal["tangent"]] = ("crossing", "tangent")  # by kind code
 
 
-def _distribute(rows: FloatArray, order: Iterable[int], items: list[list[Result]],
-                boxes: list[list[ParameterBox]]) -> None:
-    """Append the result object of each kernel row, in ``order``, to its pair's list (column 0).
+def _distribute(rows: FloatArray, items: list[list[Result]], boxes: list[list[ParameterBox]]) -> None:
+    """Append the result object of each kernel row, in order, to its pair's list (column 0).
 
     The one place where rows become :class:`Intersection`, :class:`Overlap` and
     :class:`ParameterBox` objects; points are built without the frozen-dataclass ``__init__`` cost
@@ -131,10 +129,8 @@ def _distribute(rows: FloatArray, order: Iterable[int], items: list[list[Result]
     """
     points = rows[:, 6:8]  # a view of ``rows`` (the kernel's own new array) made read-only
     points.setflags(write=False)
-    lst = rows.tolist()
     new = _NEW
-    for i in order:
-        r = lst[i]
+    for i, r in enumerate(rows.tolist()):
         kind = int(r[1])
         if kind == KIND_CROSSING or kind == KIND_TANGENT:
             obj = new(Intersection)
@@ -152,37 +148,18 @@ def _distribute(rows: FloatArray, order: Iterable[int], items: list[list[Result]
 
 
 def _rows_to_list(rows: FloatArray, tol: float = math.nan) -> IntersectionList:
-    """Build the sorted :class:`IntersectionList` of one pair's kernel result rows (``tol_used`` ``tol``).
+    """Build the :class:`IntersectionList` of one pair's kernel result rows (``tol_used`` ``tol``).
 
-    Rows are taken in the order of their ``t`` (column 2: a point's ``t``, an overlap's first
-    ``t``), a stable sort, so the list is what sorting the result objects by ``t`` would give;
-    unresolved boxes keep the kernel's order.
+    The kernel gives a pair's points and overlaps in the order of their ``t`` (a point's ``t``, an
+    overlap's first ``t``; stable), then its unresolved boxes: the order of the list.
     """
     n = rows.shape[0]
     if n == 0:
         return IntersectionList((), (), tol)
     items: list[Result] = []
     boxes: list[ParameterBox] = []
-    order: Iterable[int] = range(n)
-    if n > 1:
-        col = rows[:, 2].tolist()
-        kinds = rows[:, 1].tolist()
-        if float(KIND_UNRESOLVED) in kinds:  # a box's key is its row: the kernel's order
-            col = [i if k == KIND_UNRESOLVED else c for i, (k, c) in enumerate(zip(kinds, col, strict=True))]
-        order = sorted(order, key=col.__getitem__)
-    _distribute(rows, order, [items], [boxes])
+    _distribute(rows, [items], [boxes])
     return IntersectionList(items, boxes, tol)
-
-
-def _batch_order(rows: FloatArray) -> list[int]:
-    """Kernel rows of a batch ordered by pair, then by ``t``, unresolved boxes last in kernel order.
-
-    A stable sort (the order of Python's sort of each pair's objects by ``t``).
-    """
-    is_box = rows[:, 1] == KIND_UNRESOLVED
-    key = np.where(is_box, np.arange(rows.shape[0], dtype=np.float64), rows[:, 2])
-    order: list[int] = np.lexsort((key, is_box, rows[:, 0])).tolist()
-    return order
 
 
 def _ro(arr: FloatArray) -> FloatArray:
@@ -523,7 +500,7 @@ def _planar_batch(pairs: list[tuple[RationalBezier, RationalBezier]], tols: Floa
         rows = intersect_batch_kernel(pts, wts, offsets, idx[start:stop], tols[start:stop], budget)
         items: list[list[Result]] = [[] for _ in range(start, stop)]
         boxes: list[list[ParameterBox]] = [[] for _ in range(start, stop)]
-        _distribute(rows, _batch_order(rows), items, boxes)
+        _distribute(rows, items, boxes)  # by pair, each by t (the kernel's order)
         for j in range(stop - start):
             k = start + j
             listed = IntersectionList(items[j], boxes[j], used[k])

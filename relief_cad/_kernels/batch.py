@@ -14,9 +14,10 @@ import numpy as np
 from cython.cimports.libc.math import fabs, sqrt
 
 from .bezier import _grow
-from .constants import RES_COLS
+from .constants import KIND_UNRESOLVED, RES_COLS
 from .planar import _apart, _box, _pair_core, scratch_rows
 
+_K_UNRESOLVED = cython.declare(cython.double, KIND_UNRESOLVED)  # a C copy for the loops
 _NO_ROWS = np.empty((0, RES_COLS))
 _NO_ROWS.flags.writeable = False
 
@@ -119,9 +120,37 @@ def _batch_run(
                            tol[k], budget, k, scratch, rv, nres)
             if n < 0:
                 return k, n
+            _sort_by_t(rv, nres, n)
             nres = n
         k += 1
     return k, nres
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _sort_by_t(rv: cython.double[:, :], first: cython.Py_ssize_t, last: cython.Py_ssize_t) -> cython.void:
+    """Order one pair's rows ``first .. last - 1`` by ``t`` (column 2), stably, unresolved boxes last.
+
+    The pair driver writes its points, then its overlaps, then its unresolved boxes: the points
+    and overlaps are sorted (an insertion sort: a pair has few rows), and the boxes stay after them
+    in the order they were found. That is the order of the result lists (a point by its ``t``, an
+    overlap by its first ``t``), so the Python side builds them without sorting.
+    """
+    while last > first and rv[last - 1, 1] == _K_UNRESOLVED:
+        last -= 1
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    c: cython.Py_ssize_t
+    x: cython.double
+    for i in range(first + 1, last):
+        j = i
+        while j > first and rv[j - 1, 2] > rv[j, 2]:  # strict: equal t keep their order
+            for c in range(rv.shape[1]):
+                x = rv[j, c]
+                rv[j, c] = rv[j - 1, c]
+                rv[j - 1, c] = x
+            j -= 1
 
 
 @cython.cfunc
@@ -205,6 +234,7 @@ def intersect_one_kernel(
             with cython.nogil:
                 n = _pair_core(PA, WA, PB, WB, tol, budget, 0.0, scratch, rv, 0)
             if n >= 0:
+                _sort_by_t(rv, 0, n)
                 break
             res = np.empty((-2 - n, RES_COLS))
             rv = res

@@ -125,3 +125,28 @@ def test_intersect_packed_rejects_bad_offsets() -> None:
 
     with pytest.raises(ShapeError):
         intersect_packed(np.zeros((4, 2)), np.ones(4), np.array([0, 1, 4]), np.array([[0, 1]]))
+
+
+def test_intersect_packed_rows_of_a_pair_come_by_t_then_boxes() -> None:
+    """The order the result lists take without sorting: points and overlaps by ``t``, boxes last."""
+    from relief_cad._kernels import KIND_UNRESOLVED
+    from relief_cad.clipping import intersect_packed
+
+    rng = np.random.default_rng(29)
+    curves = [RationalBezier(rng.random((int(rng.integers(3, 9)), 2)) * 4.0) for _ in range(120)]
+    pts = np.concatenate([c.control_points for c in curves])
+    offsets = np.concatenate([[0], np.cumsum([c.control_points.shape[0] for c in curves])])
+    pairs = rng.integers(0, 120, (600, 2))
+    for budget, boxes_expected in ((100_000, False), (6, True)):
+        rows = intersect_packed(pts, np.ones(pts.shape[0]), offsets, pairs, budget=budget)
+        boxes = 0
+        several = 0
+        for k in np.unique(rows[:, 0]):
+            mine = rows[rows[:, 0] == k]
+            is_box = mine[:, 1] == KIND_UNRESOLVED
+            assert not np.any(is_box[:-1] & ~is_box[1:])  # no point after a box
+            ts = mine[~is_box, 2]
+            assert np.all(np.diff(ts) >= 0.0)
+            boxes += int(is_box.sum())
+            several += int(ts.size > 1)
+        assert (boxes > 0) == boxes_expected and (several > 20 or boxes_expected)
