@@ -438,7 +438,10 @@ def intersect_space(
         whole = whole_overlap(a3, b3, tol_s)  # coincident curves (closed ones too) by geometry
         if whole is not None:
             return IntersectionList([whole], tol_used=tol_s)
-        items, boxes = _rows_to_results(_pair(a3.homogeneous, b3.homogeneous, tol_s, nbudget))
+        rows = _pair(a3.homogeneous, b3.homogeneous, tol_s, nbudget)
+        if rows.shape[0] == 0:  # most pairs: nothing to build, sort or check
+            return IntersectionList((), (), tol_s)
+        items, boxes = _rows_to_results(rows)
         if needs_refining(a3, b3, items):
             items = refine_contacts(a3, b3, items, tol_s)
     items.sort(key=lambda r: r.t if isinstance(r, Intersection) else r.t[0])
