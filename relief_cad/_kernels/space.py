@@ -34,6 +34,8 @@ from .constants import (
 )
 from .planar import intersect_pair_kernel
 
+_NO_SPACE_ROWS = np.empty((0, SPACE_COLS))  # the rows of a pair without result (shared, read-only)
+_NO_SPACE_ROWS.flags.writeable = False
 # C copies of the constants used in the loops
 _C_EPS = cython.declare(cython.double, _EPS)
 _C_TANGENT_SIN = cython.declare(cython.double, _SPACE_TANGENT_SIN)
@@ -813,6 +815,15 @@ def _abs_max(P: cython.double[:, ::1]) -> cython.double:
     return big
 
 
+# the scratch arrays of one call of space_pair_kernel for curves of (na, nb) control points, kept
+# for the next call of that size (allocating them cost about a microsecond); a call takes them out
+# while it runs, so a call made meanwhile (another thread: the planar driver runs without the GIL)
+# makes its own. At most _SPARE_SIZES sizes are kept.
+_spare: dict = {}
+_SPARE_SIZES = 32
+_SEP_DEPTH = cython.declare(cython.int, 5)  # the separation pre-pass halves both curves this often
+
+
 def space_pair_kernel(
     HA0: cython.const[cython.double][:, :],
     HB0: cython.const[cython.double][:, :],
@@ -826,6 +837,41 @@ def space_pair_kernel(
     distance in model units (> 0: resolved by the caller, relief_cad.tolerances); ``budget``
     the planar clipping budget; ``k`` the span of the relief perspective. Returns ``(rows, nrows, status)``.
     """
+    na: cython.Py_ssize_t = HA0.shape[0]
+    nb: cython.Py_ssize_t = HB0.shape[0]
+    bufs = _spare.pop((na, nb), None)
+    if bufs is None:
+        slots: cython.Py_ssize_t = 4 * _SEP_DEPTH + 8
+        bufs = (np.empty((na + nb, 3)), np.empty((4 * na + 4 * nb + max(na, nb) + 41, 4)),
+                np.empty((slots, na + nb, 4)), np.empty(slots, dtype=np.intc))
+    try:
+        return _space_pair(HA0, HB0, tol, budget, k, bufs[0], bufs[1], bufs[2], bufs[3])
+    finally:
+        if len(_spare) < _SPARE_SIZES:
+            _spare[(na, nb)] = bufs
+
+
+@cython.cfunc
+def _space_pair(
+    HA0: cython.const[cython.double][:, :],
+    HB0: cython.const[cython.double][:, :],
+    tol: cython.double,
+    budget,
+    k: cython.double,
+    allp: cython.double[:, ::1],
+    ws: cython.double[:, ::1],
+    stack: cython.double[:, :, ::1],
+    depth: cython.int[::1],
+):
+    """:func:`space_pair_kernel` in the given scratch arrays (their contents are overwritten).
+
+    ``allp`` (na + nb, 3): the local Cartesian points; ``ws`` (4 na + 4 nb + max(na, nb) + 41, 4):
+    the curves, de Casteljau's rows, the frame and the work of the pre-pass; ``stack`` and ``depth``
+    the pre-pass's slots (:func:`_space_separated`).
+
+    Not one screen: the frames, the planar driver's rows and their classification in space share
+    the scratch views and counters.
+    """
     i: cython.Py_ssize_t
     j: cython.Py_ssize_t
     q: cython.Py_ssize_t
@@ -837,8 +883,6 @@ def space_pair_kernel(
     na: cython.Py_ssize_t = HA0.shape[0]
     nb: cython.Py_ssize_t = HB0.shape[0]
     # allp holds the local Cartesian points of a (rows :na) and of b (rows na:)
-    allp_arr = np.empty((na + nb, 3))
-    allp: cython.double[:, ::1] = allp_arr
     PA: cython.double[:, ::1] = allp[:na]
     PB: cython.double[:, ::1] = allp[na:]
     for i in range(na):
@@ -850,8 +894,6 @@ def space_pair_kernel(
     big0: cython.double = max(_abs_max(PA), _abs_max(PB))
     # one scratch array of 4 columns for the whole call, cut into blocks of rows: the local
     # curves, de Casteljau's rows, the frame, 3-vectors, the frame's work, the pre-pass's work
-    mx: cython.Py_ssize_t = max(na, nb)
-    ws: cython.double[:, ::1] = np.empty((2 * na + 2 * nb + 5 + 16 + 16 + 2 * na + 2 * nb + mx + 4, 4))
     HA: cython.double[:, ::1] = ws[0:na]
     HB: cython.double[:, ::1] = ws[na : na + nb]
     o: cython.Py_ssize_t = na + nb
@@ -878,12 +920,9 @@ def space_pair_kernel(
         HB[i, 3] = HB0[i, 3]
     big: cython.double = _abs_max(allp)
     meet: cython.double = max(1e3 * _C_EPS * big, 16.0 * _C_EPS * big0, 1e-3 * tol)
+    if _space_separated(HA, HB, tol, _SEP_DEPTH, stack, depth, sep_work):
+        return _NO_SPACE_ROWS, 0, STATUS_OK
     out = np.empty((8, SPACE_COLS))
-    sep_depth: cython.int = 5
-    sep_slots: cython.Py_ssize_t = 4 * sep_depth + 8
-    stack = np.empty((sep_slots, na + nb, 4))
-    if _space_separated(HA, HB, tol, sep_depth, stack, np.empty(sep_slots, dtype=np.intc), sep_work):
-        return out, 0, STATUS_OK
     ov: cython.double[:, ::1] = out
     # the images (numpy arrays: the planar kernel takes them)
     pa: cython.double[:] = vec[8]

@@ -334,19 +334,24 @@ def test_default_tolerance_follows_the_curve_not_its_control_polygon() -> None:
 
 
 def test_concurrent_calls_give_the_serial_results() -> None:
-    """``intersect`` keeps one scratch buffer between calls and runs the kernel without the GIL:
-    calls from several threads at once must each get their own buffer (same results as serial)."""
+    """``intersect`` keeps its kernels' scratch buffers between calls and runs the planar kernel
+    without the GIL: calls from several threads at once must each get their own buffers (the same
+    results as serial), planar pairs and space pairs (whose kernel calls the planar one) alike."""
     from concurrent.futures import ThreadPoolExecutor
 
     rng = np.random.default_rng(23)
-    pairs = [(RationalBezier(rng.random((int(rng.integers(2, 8)), 2))),
-              RationalBezier(rng.random((int(rng.integers(2, 8)), 2)))) for _ in range(400)]
+
+    def curve(k: int) -> RationalBezier:  # odd k: in the plane z = 0.3 x + 0.2 y + 0.1, in space
+        p = rng.random((int(rng.integers(2, 8)), 2))
+        return RationalBezier(p if k % 2 == 0 else np.column_stack([p, 0.3 * p[:, 0] + 0.2 * p[:, 1] + 0.1]))
+
+    pairs = [(curve(k), curve(k)) for k in range(400)]
 
     def run(chunk: list[tuple[RationalBezier, RationalBezier]]) -> list[list[tuple[float, float, str]]]:
         return [[(r.t, r.u, r.kind) for r in intersect(a, b)] for a, b in chunk]
 
     serial = run(pairs)
-    assert sum(map(len, serial)) > 300
+    assert sum(map(len, serial[0::2])) > 150 and sum(map(len, serial[1::2])) > 150
     with ThreadPoolExecutor(4) as pool:
         for _ in range(3):
             parts = list(pool.map(run, [pairs[k::4] for k in range(4)]))
