@@ -289,12 +289,31 @@ def edge_tolerance(edge: Any) -> float:
 
 
 # --------------------------------------------------------------------------- conversion
+# the matrices of the locations met last, by OCCT's hash of the location: the edges of one sketch,
+# glyph or placed part share one location, whose twelve values cost twelve calls into OCCT (7 us)
+_MATRICES: dict[int, tuple[TopLoc_Location, np.ndarray]] = {}
+_MATRICES_KEPT = 256
+
+
 def _location_matrix(loc: TopLoc_Location) -> np.ndarray | None:
-    """Return the 3x4 matrix of a location (``None`` for the identity)."""
+    """Return the 3x4 matrix of a location (``None`` for the identity), read-only.
+
+    A location equal to one met before (``IsEqual``: the same chain of transformations, hence
+    the same values) gets the matrix read then.
+    """
     if loc.IsIdentity():
         return None
+    key = loc.HashCode()
+    hit = _MATRICES.get(key)
+    if hit is not None and hit[0].IsEqual(loc):
+        return hit[1]
     value = loc.Transformation().Value
-    return np.array([[value(r, c) for c in (1, 2, 3, 4)] for r in (1, 2, 3)])
+    mat = np.array([[value(r, c) for c in (1, 2, 3, 4)] for r in (1, 2, 3)])
+    mat.flags.writeable = False
+    if len(_MATRICES) >= _MATRICES_KEPT:
+        _MATRICES.clear()
+    _MATRICES[key] = (loc, mat)
+    return mat
 
 
 def _apply(h: np.ndarray, m: np.ndarray | None) -> np.ndarray:

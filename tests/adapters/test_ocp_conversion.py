@@ -450,3 +450,22 @@ def test_trim_edge_keeps_location_and_curve():
         np.testing.assert_allclose(ocp.edge_value(piece, t), ocp.edge_value(edge, t), atol=1e-14)
     with pytest.raises(DegenerateCurveError):
         ocp.trim_edge(edge, 1.0, 1.0)
+
+
+def test_located_copies_each_get_their_own_placement() -> None:
+    """Copies of one sketch placed by different locations (the edges of a copy share its location,
+    whose matrix the conversion keeps): every converted segment lies on its own copy's edge."""
+    sketch = bd.Circle(3) + bd.Rectangle(8, 2) + bd.Text("Relief", 4)
+    copies = [sketch.moved(bd.Location((12 * k, 5 * k, 0), (0, 0, 1), 17 * k)) for k in range(4)]
+    copies.append(sketch.moved(bd.Location((0, 0, 0), (0, 0, 1), 0)))  # the identity, after the others
+    checked = 0
+    for _ in range(2):  # the second pass meets every location again
+        for copy in copies:
+            for edge in copy.edges():
+                adaptor = BRepAdaptor_Curve(edge.wrapped)
+                for seg in ocp.edge_segments(edge.wrapped):
+                    for t, s in ((seg.t0, 0.0), (0.5 * (seg.t0 + seg.t1), 0.5), (seg.t1, 1.0)):
+                        p = adaptor.Value(t)
+                        assert np.allclose(seg.curve(s), (p.X(), p.Y(), p.Z()), atol=1e-9)
+                        checked += 1
+    assert checked > 1000
