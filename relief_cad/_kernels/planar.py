@@ -124,6 +124,30 @@ def _put(
     res[nres, 8] = dist
 
 
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+@cython.inline
+def _hypot_le(dx: cython.double, dy: cython.double, e: cython.double) -> cython.bint:
+    """``hypot(dx, dy) <= e``, the same answer, without ``hypot`` when the squares decide it.
+
+    ``q = dx² + dy²`` is within 3e-16 of the exact sum relative (plus 2e-308 where the squares
+    underflow), and ``hypot`` within an ulp of its root: outside a band of 1e-14 around ``e²``, ``q``
+    decides as ``hypot`` would (for ``e`` from 1e-140 to 1e140; else, and for NaN, ``hypot``
+    decides). ``hypot`` is a tenth of the clipping's time; this test runs twice a step.
+    """
+    q: cython.double
+    e2: cython.double
+    if 1e-140 < e < 1e140:
+        q = dx * dx + dy * dy
+        e2 = e * e
+        if q < e2 * (1.0 - 1e-14):
+            return True
+        if q > e2 * (1.0 + 1e-14):
+            return False
+    return hypot(dx, dy) <= e
+
+
 def _box(
     P: cython.const[cython.double][:, :]
 ) -> tuple[cython.double, cython.double, cython.double, cython.double]:
@@ -441,9 +465,13 @@ def _pair_core(
             fresh = False
             if axl > bxh + tl or bxl > axh + tl or ayl > byh + tl or byl > ayh + tl:
                 break
-            exa = hypot(axh - axl, ayh - ayl)
-            exb = hypot(bxh - bxl, byh - byl)
-            if (exa <= epsb and exb <= epsb) or (t1 - t0 <= 1e-15 and u1 - u0 <= 1e-15):
+            # the sub-curves' extents at the start of this step (hypot only where a test needs it)
+            dxa = axh - axl
+            dya = ayh - ayl
+            dxb = bxh - bxl
+            dyb = byh - byl
+            if (_hypot_le(dxa, dya, epsb) and _hypot_le(dxb, dyb, epsb)) or (
+                    t1 - t0 <= 1e-15 and u1 - u0 <= 1e-15):
                 cands = _room(cands, ncand + 1)
                 cands[ncand, 0] = t0
                 cands[ncand, 1] = t1
@@ -498,6 +526,8 @@ def _pair_core(
                 fresh = True
                 continue
             # stalled: a flat band contact, or split the larger sub-curve
+            exa = hypot(dxa, dya)
+            exb = hypot(dxb, dyb)
             if wida <= tl and widb <= tl and exa <= 4.0 * exb + tl and exb <= 4.0 * exa + tl:
                 cands = _room(cands, ncand + 1)
                 cands[ncand, 0] = t0

@@ -150,3 +150,36 @@ def test_intersect_packed_rows_of_a_pair_come_by_t_then_boxes() -> None:
             boxes += int(is_box.sum())
             several += int(ts.size > 1)
         assert (boxes > 0) == boxes_expected and (several > 20 or boxes_expected)
+
+
+_HYPOT_LE_CHECK = """
+import math, random
+from relief_cad._kernels.planar import _hypot_le
+random.seed(7)
+cases = [(3.0, 4.0, 5.0), (3.0, 4.0, math.nextafter(5.0, 0.0)), (0.0, 0.0, 0.0), (-0.0, 0.0, 1e-300),
+         (math.nan, 1.0, 2.0), (math.inf, 1.0, 1e300), (1e-160, 1e-160, 1e-150), (1e-200, 0.0, 1e-139),
+         (1e200, 1e200, 1e139), (2.0, 2.0, math.hypot(2.0, 2.0))]
+for _ in range(200000):
+    e = 10.0 ** random.uniform(-300, 300)
+    dx, dy = (e * random.uniform(-1.0, 1.0) * 10.0 ** random.uniform(-3, 1) for _ in range(2))
+    cases.append((dx, dy, e))
+    h = math.hypot(dx, dy)  # and e at an ulp or two around the root: the band where q cannot decide
+    cases += [(dx, dy, h), (dx, dy, math.nextafter(h, 0.0)), (dx, dy, math.nextafter(h, math.inf))]
+bad = [c for c in cases if _hypot_le(*c) != (math.hypot(c[0], c[1]) <= c[2])]
+print(len(cases), bad[:5])
+raise SystemExit(1 if bad else 0)
+"""
+
+
+def test_hypot_le_decides_as_hypot() -> None:
+    """The pair driver's size test ``hypot(dx, dy) <= e`` decided from the squares gives hypot's answer.
+
+    Run on the uncompiled kernels (the helper is a C function once compiled), in a subprocess.
+    """
+    import os
+    import subprocess
+    import sys
+
+    out = subprocess.run([sys.executable, "-c", _HYPOT_LE_CHECK], env=dict(os.environ, RELIEF_CAD_PURE="1"),
+                         capture_output=True, text=True, timeout=600, check=False)
+    assert out.returncode == 0, out.stdout[-2000:] + out.stderr[-2000:]
