@@ -361,7 +361,7 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
         check_curve(a, "a")
     if b is not None and type(b) is not RationalBezier:
         check_curve(b, "b")
-    if on_budget != "raise":  # the default passes the check: skipped on the hot path
+    if type(on_budget) is not str or on_budget != "raise":  # the default needs no further check
         check_on_budget(on_budget)
     nbudget = DEFAULT_BUDGET if budget is None else check_budget(budget)
     pa = a.control_points

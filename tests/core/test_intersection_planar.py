@@ -59,9 +59,12 @@ def test_bad_budget_raises(budget: int) -> None:
         intersect(PARABOLA, _line((0, 1), (2, 1)), budget=budget)
 
 
-def test_bad_on_budget_raises() -> None:
-    with pytest.raises(InvalidInputError):
-        intersect(PARABOLA, PARABOLA, on_budget="ignore")  # type: ignore[arg-type]
+@pytest.mark.parametrize("bad", ["ignore", None, 1, np.array(["raise"]), np.array(["raise", "return"]), b"raise"])
+def test_bad_on_budget_raises(bad: object) -> None:
+    space_line = RationalBezier([[0, 0.5, 0], [2, 0.5, 0]])  # the pair goes to the space intersector
+    for b in (PARABOLA, space_line):
+        with pytest.raises(InvalidInputError, match="on_budget should be 'raise' or 'return'"):
+            intersect(PARABOLA, b, on_budget=bad)  # type: ignore[arg-type]
 
 
 # ----------------------------------------------------------------------------- closed forms
