@@ -924,7 +924,8 @@ def _space_pair(
         return _NO_SPACE_ROWS, 0, STATUS_OK
     out = np.empty((8, SPACE_COLS))
     ov: cython.double[:, ::1] = out
-    # the images (numpy arrays: the planar kernel takes them)
+    # points and derivatives on the curves (rows of vec), then the planar images, which the planar
+    # driver takes as they are
     pa: cython.double[:] = vec[8]
     da: cython.double[:] = vec[9]
     pb: cython.double[:] = vec[10]
