@@ -326,38 +326,40 @@ def _curve_box_update(
     P: cython.const[cython.double][:, :], W: cython.const[cython.double][:], box: cython.double[:],
     wk: cython.double[:, :],
 ):
-    """Grow ``box`` (per coordinate ``[lo, hi]`` pairs) by samples of the curve itself.
+    """Grow ``box`` (``[xlo, xhi, ylo, yhi]``) by samples of the planar curve itself.
 
-    The curve is sampled at ``2 (n + 1) + 1`` uniform parameters by homogeneous de
-    Casteljau: the curve's own extent, not its control polygon's (which can be far
-    larger for ill-conditioned curves). ``wk`` is work space of at least ``n + 1`` rows
-    and ``dim + 1`` columns (overwritten).
+    The curve (``P`` (n + 1, 2), weights ``W``) is sampled at ``2 (n + 1) + 1`` uniform
+    parameters by homogeneous de Casteljau: the curve's own extent, not its control polygon's
+    (which can be far larger for ill-conditioned curves). ``wk`` is work space of at least
+    ``n + 1`` rows and 3 columns (overwritten). The three coordinates are written out, not
+    looped over: a tenth of the time of a degree-7 pair goes here.
     """
     i: cython.Py_ssize_t
-    j: cython.Py_ssize_t
     k: cython.Py_ssize_t
     r: cython.Py_ssize_t
     t: cython.double
     s: cython.double
     x: cython.double
     m: cython.Py_ssize_t = P.shape[0]
-    d: cython.Py_ssize_t = P.shape[1]
     ns: cython.Py_ssize_t = 2 * m + 1
     for k in range(ns):
         t = k / (ns - 1.0)
         s = 1.0 - t
         for i in range(m):
-            for j in range(d):
-                wk[i, j] = W[i] * P[i, j]
-            wk[i, d] = W[i]
+            wk[i, 0] = W[i] * P[i, 0]
+            wk[i, 1] = W[i] * P[i, 1]
+            wk[i, 2] = W[i]
         for r in range(1, m):
             for i in range(m - r):
-                for j in range(d + 1):
-                    wk[i, j] = s * wk[i, j] + t * wk[i + 1, j]
-        for j in range(d):
-            x = wk[0, j] / wk[0, d]
-            box[2 * j] = min(box[2 * j], x)
-            box[2 * j + 1] = max(box[2 * j + 1], x)
+                wk[i, 0] = s * wk[i, 0] + t * wk[i + 1, 0]
+                wk[i, 1] = s * wk[i, 1] + t * wk[i + 1, 1]
+                wk[i, 2] = s * wk[i, 2] + t * wk[i + 1, 2]
+        x = wk[0, 0] / wk[0, 2]
+        box[0] = min(box[0], x)
+        box[1] = max(box[1], x)
+        x = wk[0, 1] / wk[0, 2]
+        box[2] = min(box[2], x)
+        box[3] = max(box[3], x)
 
 
 def _homog(
