@@ -542,7 +542,9 @@ def _batch_found(
 ) -> list[list[_Found] | None]:
     """The batch kernel on packed segment pairs: every pair's results by ``t``, None where the ends meet.
 
-    ``pair_of(k)`` names pair ``k``'s edges and segments, for the budget error of an unresolved pair.
+    The kernel gives each pair's rows in the order of ``t`` (an overlap by its first ``t``), so
+    they are kept as they come. ``pair_of(k)`` names pair ``k``'s edges and segments, for the
+    budget error of an unresolved pair.
     """
     run = np.flatnonzero(~_ends_meet_packed(ends, pairs, tol))
     rows: list[list[float]] = []
@@ -563,10 +565,7 @@ def _batch_found(
             raise InvalidInputError("internal: unresolved box without a budget error")  # pragma: no cover
         name = "crossing" if kind == KIND_CROSSING else "tangent" if kind == KIND_TANGENT else "overlap"
         out[k].append((name, r[2], r[3], r[4], r[5], r[8]))  # type: ignore[union-attr]
-    for found in out:
-        if found is not None and len(found) > 1:
-            found.sort(key=lambda f: f[1])
-    return out
+    return out  # each pair's rows come by t from the batch kernel (clipping.intersect_packed)
 
 
 def _solve(
