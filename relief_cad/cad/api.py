@@ -1015,7 +1015,9 @@ def split(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
         of ``a`` in :func:`~relief_cad.cad.ocp.edges_of` order, its pieces in
         increasing parameter, on the same curve, keeping location and
         orientation; edges that are not cut come back unchanged. Overlaps cut at
-        their ends.
+        their ends. A cut whose point is within
+        :func:`~relief_cad.cad.ocp.shortest_piece` of the previous cut or of the
+        edge's end is not made: OCCT cannot make an edge that short.
 
     Examples
     --------
@@ -1028,6 +1030,7 @@ def split(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
     [(0.0, 1.0), (1.0, 4.0)]
     """
     flavour, raws, ftol, infos = _run(a, b, tol)
+    shortest = ocp.shortest_piece(ftol)
     cuts: dict[int, list[float]] = {}
     for r in raws:
         params_a = list(r.t) if r.kind == "overlap" else [r.t]
@@ -1044,11 +1047,12 @@ def split(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
             continue
         params = [info.first]
         last_point = ocp.edge_value(edge, info.first)
+        end_point = ocp.edge_value(edge, info.last)
         for t in sorted(cuts[index]):
             p = ocp.edge_value(edge, t)
-            if info.first < t < info.last and math.dist(p, last_point) > ftol and math.dist(
-                p, ocp.edge_value(edge, info.last)
-            ) > ftol:
+            if info.first < t < info.last and math.dist(p, last_point) > shortest and math.dist(
+                p, end_point
+            ) > shortest:
                 params.append(t)
                 last_point = p
         params.append(info.last)

@@ -14,9 +14,11 @@ How: the intersections come from :func:`relief_cad.cad.api` (broad phase by
 :mod:`relief_cad.broadphase`, every candidate segment pair through the core's
 batch kernel in one call); the cut points and the edges' end vertices are
 merged into vertices by :func:`relief_cad.broadphase.cluster_points` (points
-within ``tol``, plus ends that already share a vertex); each vertex is placed at
-the mean of the curve points it stands for, and its tolerance is the largest
-distance from it to those curve points (the real error of the intersection,
+within ``tol``, or within OCCT's ``Precision::Confusion`` where ``tol`` is smaller:
+see :func:`relief_cad.cad.ocp.shortest_piece`; plus ends that already share a
+vertex); each vertex is placed at the mean of the curve points it stands for,
+and its tolerance is the largest distance from it to those curve points (the
+real error of the intersection,
 floored at OCCT's ``Precision::Confusion``), so ``BRepCheck_Analyzer`` accepts
 every piece. Inputs are never modified.
 
@@ -120,7 +122,8 @@ def _graph(a: Any, b: Any, tol: float | None) -> tuple[_Graph, int]:
     edges_a = ocp.edges_of(a)
     edges_b = [] if b is None else ocp.edges_of(b)
     _, raws, ftol, infos = api._run(edges_a, None if b is None else edges_b, tol)
-    graph = _Graph(edges_a + edges_b, set(), tol=ftol, flavour=flavour.flavour_of(a))
+    # cut points closer than OCCT can keep apart are one vertex (no piece between them)
+    graph = _Graph(edges_a + edges_b, set(), tol=ocp.shortest_piece(ftol), flavour=flavour.flavour_of(a))
     graph.frame = infos[0].frame
     values = graph.values
     offset = len(edges_a)

@@ -54,6 +54,7 @@ from OCP.Geom2d import Geom2d_BezierCurve
 from OCP.GeomAbs import GeomAbs_Shape
 from OCP.GeomConvert import GeomConvert_ApproxCurve, GeomConvert_BSplineCurveToBezierCurve
 from OCP.gp import gp_Pnt, gp_Pnt2d
+from OCP.Precision import Precision
 from OCP.TopLoc import TopLoc_Location
 from OCP.TopoDS import TopoDS_Edge, TopoDS_Vertex
 
@@ -82,6 +83,7 @@ __all__ = [
     "make_compound",
     "make_vertex",
     "planar_frame",
+    "shortest_piece",
     "to_edge",
     "to_geom2d_bezier",
     "to_geom_bezier",
@@ -694,6 +696,21 @@ def make_vertex(point: Sequence[float]) -> TopoDS_Vertex:
     (1.0, 2.0, 3.0)
     """
     return BRepBuilderAPI_MakeVertex(gp_Pnt(float(point[0]), float(point[1]), float(point[2]))).Vertex()
+
+
+def shortest_piece(tol: float) -> float:
+    """The least distance (model units) between the end points of a piece of an edge cut by relief_cad.
+
+    OCCT's edge maker takes two ends within ``Precision::Confusion()`` (1e-7) of each
+    other for one point, and refuses two different vertices there
+    (``BRepBuilderAPI_DifferentPointsOnClosedCurve``): no cut is made closer than
+    that to another cut or to an edge's end, nor closer than the model tolerance
+    ``tol``. So on parts not much larger than 1e-7, cuts that close merge.
+
+    >>> shortest_piece(1e-9), shortest_piece(0.01)
+    (1e-07, 0.01)
+    """
+    return max(float(tol), float(Precision.Confusion_s()))
 
 
 def trim_edge(edge: Any, t0: float, t1: float) -> TopoDS_Edge:

@@ -24,9 +24,9 @@ from OCP.GProp import GProp_GProps
 from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE, TopAbs_VERTEX
 from OCP.TopExp import TopExp
 
+from relief_cad.cad import api, ocp
 from relief_cad.cad import arrangement as arrange_module
 from relief_cad.cad import build123d as rbd
-from relief_cad.cad import ocp
 from relief_cad.cad._compat import IndexedMapOfShape, downcast_edge
 from relief_cad.errors import InputTypeError, InvalidInputError, ReliefCadError, ToleranceError
 from tests._env import needs_cadquery
@@ -138,6 +138,45 @@ def test_vertex_tolerance_is_the_measured_error_not_a_blanket_value():
         tol = BRep_Tool.Tolerance_s(v)
         assert max(ds) <= tol <= max(1e-7, 1.001 * max(ds) + 1e-15)
     assert_connected(pieces)
+
+
+# --------------------------------------------------------------------------- cuts closer than OCCT's resolution
+def test_cuts_closer_than_occt_confusion_merge_instead_of_failing():
+    """Two cutters 5e-8 apart with tol=1e-10: OCCT cannot make the 5e-8 piece between them.
+
+    The cuts merge into one vertex (OCCT's ``Precision::Confusion``, 1e-7, is the shortest
+    piece), as with the default tolerance, instead of an OcctError from the edge maker.
+    """
+    a = line((0, 0, 0), (10, 0, 0))
+    cutters = [line((5, -1, 0), (5, 1, 0)), line((5 + 5e-8, -1, 0), (5 + 5e-8, 1, 0))]
+    for tol in (None, 1e-10):
+        pieces = api.split(a, cutters, tol=tol)
+        assert [BRep_Tool.Range_s(e) for e in pieces] == [(0.0, 5.0), (5.0, 10.0)]
+        arranged = arrange([a, *cutters], tol=tol)
+        assert len(arranged) == 4  # a in two, the cutters one edge (within 1e-7 of each other) in two
+        assert_connected(arranged, tol=2e-7)
+        pa, pb = split_both(a, cutters, tol=tol)
+        assert len(pa) == 2 and len(pb) == 4
+        assert_connected(list(pa) + list(pb), tol=2e-7)
+
+
+@pytest.mark.parametrize("kind", ["line", "bezier"])
+def test_part_of_size_1e_6_is_cut_where_occt_can_keep_pieces_apart(kind):
+    """A crossing 8.6e-8 from a's start at scale 1e-6 (found by the CAD fuzz): no piece shorter than 1e-7."""
+    first = bd.Edge.make_line((3.2533594812159234e-06, 1.90576690168536e-06), (2.321607934007233e-06, 1.224008628861211e-06))
+    other = bd.Edge.make_bezier((3.3705919068602463e-06, 1.7833356278306984e-06), (1.9268476911488663e-06, 2.3607926826197946e-06),
+                                (2.591793915056801e-06, 1.6290473687813069e-06), (1.7134838769253044e-06, 1.71540395780513e-06))
+    a, b = (first, other) if kind == "line" else (other, first)
+    crossings = api.intersections(a, b)
+    assert len(crossings) == 1
+    pieces = api.split(a, b)
+    for p in pieces:
+        t0, t1 = BRep_Tool.Range_s(p.wrapped)
+        assert math.dist(ocp.edge_value(p, t0), ocp.edge_value(p, t1)) > 1e-7
+    assert len(pieces) == (1 if kind == "line" else 2)  # 8.6e-8 from the line's start; mid-Bézier
+    pa, pb = split_both(a, b)
+    assert_connected(list(pa) + list(pb), tol=1e-7)
+    assert_connected(arrange([a, b]), tol=1e-7)
 
 
 def test_self_intersection_of_one_edge_is_cut():
