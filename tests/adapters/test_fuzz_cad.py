@@ -7,7 +7,8 @@ through each reported point at the reported parameters (each edge's own OCCT par
 swapping a and b swaps them; a reversed edge keeps its parameters (orientation does not change
 them); moving both shapes keeps the parameters and moves the points; a face or wire gives the
 results of its edges; ``intersect`` returns the distinct points; ``split`` cuts at them;
-OCCT's ``occt_intersections`` finds the same transversal crossings; the same input twice gives
+OCCT's ``occt_intersections`` finds the same transversal crossings, or where it misses one the
+50-digit arbiter confirms it; ``split`` makes no piece shorter than OCCT can; the same input twice gives
 the same answer. Bad input must be a ReliefCadError that is also the matching built-in, naming
 what was expected and what came. Counts: tests/_fuzz.py.
 """
@@ -18,13 +19,16 @@ import math
 
 import build123d as bd
 import pytest
+from hypothesis import assume
 from hypothesis import strategies as st
 from OCP.BRep import BRep_Tool
 from OCP.BRepAdaptor import BRepAdaptor_Curve
 from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
 from OCP.gp import gp_Dir, gp_Lin, gp_Pnt
+from OCP.Precision import Precision
 
-from relief_cad.cad import api, compare, edges_of, occt_intersections, split
+from relief_cad.cad import api, compare, edges_of, occt_intersections, ocp, split
+from relief_cad.cad.arbiter import arbitrate_point
 from relief_cad.cad.results import EdgeIntersection, EdgeOverlap
 from relief_cad.errors import InputTypeError, ShapeError, ToleranceError
 from tests._fuzz import Case, fuzz
@@ -45,6 +49,8 @@ def edges(draw: st.DrawFn, scale: float, offset: tuple[float, float]) -> bd.Edge
         if abs((x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0)) < 0.05 * scale * scale:
             kind = "line"  # nearly collinear: no well-defined arc
     if kind == "line":
+        # OCCT refuses a line between ends within Precision::Confusion (1e-7): no edge to test
+        assume(math.dist(pts[0], pts[-1]) > 1e-7)
         return bd.Edge.make_line(pts[0], pts[-1])
     if kind == "arc":
         return bd.Edge.make_three_point_arc(*pts)
@@ -113,9 +119,14 @@ def _params(e: object) -> list[float]:
 
 
 def sees(theirs: list, r: EdgeIntersection, scale: float) -> bool:
-    """OCCT has the crossing ``r``: a point there, or one of its tiny overlaps around it."""
+    """OCCT has the crossing ``r``: a point there, or one of its tiny overlaps around it.
+
+    OCCT's own points may be off by its resolution (``Precision::Confusion``, 1e-7) on top
+    of the bound: at scale 1e-6 it puts a crossing 1.4e-7 from a line's start onto the start.
+    """
     ptol = 1e-6 * scale + 1e-9
-    return any(math.dist(q.point, r.point) <= bound(scale) if isinstance(q, EdgeIntersection)
+    near = bound(scale) + Precision.Confusion_s()
+    return any(math.dist(q.point, r.point) <= near if isinstance(q, EdgeIntersection)
                else q.t[0] - ptol <= r.t <= q.t[1] + ptol for q in theirs if q.index_a == r.index_a)
 
 
@@ -154,14 +165,15 @@ def test_fuzz_edge_pairs(case: Case, drawn: tuple[bd.Edge, bd.Edge, float]) -> N
     case.answered()
 
 
-@pytest.mark.xfail(strict=False, reason="open (found late, not yet triaged): at scale 1e-6 split raises OcctError "
-                   "(BRepBuilderAPI_DifferentPointsOnClosedCurve) on a piece [0, 6.25e-08], a sphere-free pair gives "
-                   "'no edge with a curve (1 degenerated)', and OCCT misses a crossing 1.25e-6 from an edge end")
 @fuzz("cad: moved, split and OCCT", edge_pairs(), st.tuples(st.floats(-5, 5), st.floats(-5, 5), st.floats(-5, 5)),
       st.tuples(st.floats(-180, 180), st.floats(-180, 180), st.floats(-180, 180)), examples=300, min_answered=1.0)
 def test_fuzz_moved_split_occt(case: Case, drawn: tuple[bd.Edge, bd.Edge, float], shift: tuple,
                                angles: tuple) -> None:
     a, b, scale = drawn
+    if degenerated(a, b):
+        name = "a" if degenerated(a) else "b"
+        case.refuses(lambda: split(a, b), ValueError, f"shape {name}", "degenerated", error=ShapeError)
+        return
     ab = api.intersections(a, b)
     loc = bd.Location(tuple(scale * s for s in shift), angles)
     moved = api.intersections(a.moved(loc), b.moved(loc))
@@ -171,9 +183,12 @@ def test_fuzz_moved_split_occt(case: Case, drawn: tuple[bd.Edge, bd.Edge, float]
         found(case, r, moved, r.t, r.u, p, 6 * scale, "moved")
     theirs = occt_intersections(a, b)
     for r in clean(ab, scale):
-        case.check(sees(theirs, r, scale), "OCCT does not see the crossing", r, theirs)
+        if not sees(theirs, r, scale):  # OCCT misses it: the 50-digit arbiter must confirm ours
+            check = arbitrate_point(a, b, r.t, r.u, tol=bound(scale))
+            case.check(check.kind == "crossing", "OCCT misses a crossing the arbiter does not confirm",
+                       r, theirs, check)
     pieces = split(a, b)
-    cuts = len({round(r.t, 9) for r in clean(ab, scale)})
+    cuts = len(apart([value(a, r.t) for r in clean(ab, scale)], [value(a, x) for x in BRep_Tool.Range_s(a.wrapped)]))
     case.check(len(pieces) >= cuts + 1, "split gave fewer pieces than crossings + 1", len(pieces), cuts)
     ends = [[value(p, x) for x in BRep_Tool.Range_s(p.wrapped)] for p in pieces]
     t0, t1 = BRep_Tool.Range_s(a.wrapped)
@@ -182,6 +197,16 @@ def test_fuzz_moved_split_occt(case: Case, drawn: tuple[bd.Edge, bd.Edge, float]
     case.check(all(math.dist(p[1], q[0]) <= bound(scale) for p, q in zip(ends, ends[1:])),
                "the pieces do not join", shown(a, b))
     case.answered()
+
+
+def apart(points: list, ends: list) -> list:
+    """The points farther than OCCT's shortest piece (1e-7 here) from the ends and from each other."""
+    shortest = ocp.shortest_piece(0.0)
+    kept: list = []
+    for p in points:
+        if all(math.dist(p, q) > shortest for q in ends + kept):
+            kept.append(p)
+    return kept
 
 
 @st.composite
