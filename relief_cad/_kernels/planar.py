@@ -89,7 +89,11 @@ def _two_roots(pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssiz
 @cython.cfunc
 @cython.nogil
 def _room(a: cython.double[:, :], n: cython.Py_ssize_t) -> cython.double[:, :]:
-    """``a`` itself when it has at least ``n`` rows, else a larger copy (:func:`._grow`, with the GIL)."""
+    """``a`` itself when it has at least ``n`` rows, else a larger copy (:func:`._grow`, with the GIL).
+
+    The callers test ``n > a.shape[0]`` first: ``a = _room(a, n)`` takes the view again (two
+    atomic updates of its acquisition count) even when nothing grows, on every row or split.
+    """
     if n <= a.shape[0]:
         return a
     with cython.gil:
@@ -257,25 +261,23 @@ def _pair_core(
         return nres
     # the curves in the frame and all scratch arrays are blocks of rows of ``scratch`` (one
     # allocation by the caller; each costs about half a microsecond), viewed as arrays of 1 to
-    # RES_COLS columns; an array that must grow is replaced by a larger copy (see _room). The
-    # last blocks: the points and roots of up to _NSMALL candidates (b5), and _NSMALL rows of
-    # small vectors (cluster labels, kept flags, used ends, a box: one column each)
-    n3 = 3 * ma + 3 * mb + 8
-    n2 = 2 * ma + 2 * mb + 16
-    n1 = 3 * ma + 3 * mb
-    n4 = 88
-    r6 = ma + mb + n3 + n2 + n1 + n4  # b6: ma + mb rows
-    r5 = r6 + ma + mb  # b5: 8 + 2 * _NSMALL + 4 rows
-    rv5 = r5 + 8 + 2 * _NSMALL + 4  # small vectors: _NSMALL rows, the last of scratch_rows(ma, mb)
-    vecs: cython.double[:, :] = scratch[rv5 : rv5 + _NSMALL]
+    # RES_COLS columns; an array that must grow is replaced by a larger copy (see _room). After
+    # the curves (HA, HB): a block of 3 columns from row o3, of 2 from o2, of 1 from o1, of 4 from
+    # o4 (overlaps, stack, candidates, boxes), the derivative rows (r6), the points and roots of up
+    # to _NSMALL candidates (r5), and _NSMALL rows of small vectors (rv5: cluster labels, kept
+    # flags, used ends, a box: one column each). Each view is sliced straight from ``scratch``,
+    # where and when it is first needed: taking a view costs two atomic updates of the buffer's
+    # acquisition count (on entry and on return), a tenth of a small pair's time for 30 views
     r0 = ma + mb
+    o3 = r0
+    o2 = o3 + 3 * ma + 3 * mb + 8
+    o1 = o2 + 2 * ma + 2 * mb + 16
+    o4 = o1 + 3 * ma + 3 * mb
+    r6 = o4 + 88  # ma + mb rows
+    r5 = r6 + ma + mb  # 8 + 2 * _NSMALL + 4 rows
+    rv5 = r5 + 8 + 2 * _NSMALL + 4  # _NSMALL rows, the last of scratch_rows(ma, mb)
     HA: cython.double[:, :] = scratch[0:ma, 0:3]
     HB: cython.double[:, :] = scratch[ma:r0, 0:3]
-    b3: cython.double[:, :] = scratch[r0 : r0 + n3, 0:3]
-    b2: cython.double[:, :] = scratch[r0 + n3 : r0 + n3 + n2, 0:2]
-    b1: cython.double[:] = scratch[r0 + n3 + n2 : r0 + n3 + n2 + n1, 0]
-    b4: cython.double[:, :] = scratch[r0 + n3 + n2 + n1 : r0 + n3 + n2 + n1 + n4, 0:4]
-    b6: cython.double[:, :] = scratch[r6:r5, 0:6]
     cx, cy, scale = _frame(PA, PB)
     _homog_into(PA, WA, cx, cy, scale, HA)
     _homog_into(PB, WB, cx, cy, scale, HB)
@@ -283,29 +285,25 @@ def _pair_core(
     if not tl > 0.0:
         tl = 1e-300
     inv = 1.0 / scale
-    wa: cython.double[:, :] = b3[0:ma]
-    wb: cython.double[:, :] = b3[ma : ma + mb]
+    wa: cython.double[:, :] = scratch[o3 : o3 + ma, 0:3]
+    wb: cython.double[:, :] = scratch[o3 + ma : o3 + ma + mb, 0:3]
     rnd: cython.double = _C_ROUND * max(1.0, 1.0)  # frame is normalised to |x| < 1
 
     # no Python object below: the rare allocations take the GIL back (``with cython.gil``, _room)
     # ---------------------------------------------------------------- end points
     # candidates (t, u, dist) from each end point's projection on the other curve;
     # an end point outside the other curve's two fat lines (widened by tol) is skipped
-    CA = b2[0:ma]
-    CB = b2[ma : ma + mb]
-    VA = b1[0:ma]
-    VB = b1[ma : ma + mb]
+    CA = scratch[o2 : o2 + ma, 0:2]
+    CB = scratch[o2 + ma : o2 + ma + mb, 0:2]
+    VA = scratch[o1 : o1 + ma, 0]
+    VB = scratch[o1 + ma : o1 + ma + mb, 0]
     _cartesian(HA, CA, VA)
     _cartesian(HB, CB, VB)
-    SA = b3[ma + mb : 2 * ma + mb]
-    SB = b3[2 * ma + mb : 2 * ma + 2 * mb]
-    ea = b1[ma + mb : 2 * ma + mb]
-    eb = b1[2 * ma + mb : 2 * ma + 2 * mb]
-    CPA = b2[ma + mb : 2 * ma + mb]
-    CPB = b2[2 * ma + mb : 2 * ma + 2 * mb]
-    VPA = b1[2 * ma + 2 * mb : 3 * ma + 2 * mb]
-    VPB = b1[3 * ma + 2 * mb : 3 * ma + 3 * mb]
-    ends: cython.double[:, :] = b3[3 * ma + 3 * mb : 3 * ma + 3 * mb + 8]
+    SA = scratch[o3 + ma + mb : o3 + 2 * ma + mb, 0:3]
+    SB = scratch[o3 + 2 * ma + mb : o3 + 2 * ma + 2 * mb, 0:3]
+    ea = scratch[o1 + ma + mb : o1 + 2 * ma + mb, 0]
+    eb = scratch[o1 + 2 * ma + mb : o1 + 2 * ma + 2 * mb, 0]
+    ends: cython.double[:, :] = scratch[o3 + 3 * ma + 3 * mb : o3 + 3 * ma + 3 * mb + 8, 0:3]
     nend = 0
     # cheap rejection: an end point farther than tol outside the other curve's two fat lines
     fa0 = fat_line_kernel(CA, False)
@@ -331,6 +329,8 @@ def _pair_core(
             te = float(which)
             px = CA[na * which, 0]
             py = CA[na * which, 1]
+            CPB = scratch[o2 + 2 * ma + mb : o2 + 2 * ma + 2 * mb, 0:2]
+            VPB = scratch[o1 + 3 * ma + 2 * mb : o1 + 3 * ma + 3 * mb, 0]
             uu, dd = _point_on(HB, px, py, tl, SB, CPB, VPB, eb, wb)
             # snap to an end point of b when that end also is within tol
             for iend in range(2):
@@ -346,6 +346,8 @@ def _pair_core(
             ue = float(which - 2)
             px = CB[nb * (which - 2), 0]
             py = CB[nb * (which - 2), 1]
+            CPA = scratch[o2 + ma + mb : o2 + 2 * ma + mb, 0:2]
+            VPA = scratch[o1 + 2 * ma + 2 * mb : o1 + 3 * ma + 2 * mb, 0]
             tt, dd = _point_on(HA, px, py, tl, SA, CPA, VPA, ea, wa)
             for iend in range(2):
                 te = float(iend)
@@ -373,47 +375,49 @@ def _pair_core(
                 nend += 1
 
     # ---------------------------------------------------------------- overlaps
-    ov: cython.double[:, :] = b4[0:4]
+    ov: cython.double[:, :] = scratch[o4 : o4 + 4, 0:4]
     nov: cython.Py_ssize_t = 0
-    used: cython.double[:] = vecs[0:8, 2]  # 1.0 for an end used by an overlap
-    for i in range(8):
-        used[i] = 0.0
-    nsamp = max(24, na * nb + 4)
-    for i in range(nend):
-        for j in range(i + 1, nend):
-            if used[i] and used[j]:
-                continue
-            if abs(ends[i, 0] - ends[j, 0]) <= 1e-9 or abs(ends[i, 1] - ends[j, 1]) <= 1e-9:
-                continue
-            if ends[i, 0] < ends[j, 0]:
-                p, q = i, j
-            else:
-                p, q = j, i
-            with cython.gil:  # it allocates
-                same = _coincide(HA, HB, ends[p, 0], ends[p, 1], ends[q, 0], ends[q, 1], tl, wa, wb, nsamp)
-            if same:
-                ov[nov, 0] = ends[p, 0]
-                ov[nov, 1] = ends[q, 0]
-                ov[nov, 2] = ends[p, 1]
-                ov[nov, 3] = ends[q, 1]
-                nov += 1
-                used[i] = 1.0
-                used[j] = 1.0
-                if nov == 4:
-                    break
-        if nov == 4:
-            break
+    if nend >= 2:  # an overlap runs between two end contacts
+        used: cython.double[:] = scratch[rv5 : rv5 + 8, 2]  # 1.0 for an end used by an overlap
+        for i in range(8):
+            used[i] = 0.0
+        nsamp = max(24, na * nb + 4)
+        for i in range(nend):
+            for j in range(i + 1, nend):
+                if used[i] and used[j]:
+                    continue
+                if abs(ends[i, 0] - ends[j, 0]) <= 1e-9 or abs(ends[i, 1] - ends[j, 1]) <= 1e-9:
+                    continue
+                if ends[i, 0] < ends[j, 0]:
+                    p, q = i, j
+                else:
+                    p, q = j, i
+                with cython.gil:  # it allocates
+                    same = _coincide(HA, HB, ends[p, 0], ends[p, 1], ends[q, 0], ends[q, 1], tl, wa, wb,
+                                     nsamp)
+                if same:
+                    ov[nov, 0] = ends[p, 0]
+                    ov[nov, 1] = ends[q, 0]
+                    ov[nov, 2] = ends[p, 1]
+                    ov[nov, 3] = ends[q, 1]
+                    nov += 1
+                    used[i] = 1.0
+                    used[j] = 1.0
+                    if nov == 4:
+                        break
+            if nov == 4:
+                break
 
     # ---------------------------------------------------------------- clipping
-    stack: cython.double[:, :] = b4[4:68]
+    stack: cython.double[:, :] = scratch[o4 + 4 : o4 + 68, 0:4]
     stack[0, 0] = 0.0
     stack[0, 1] = 1.0
     stack[0, 2] = 0.0
     stack[0, 3] = 1.0
     nstack = 1
-    cands: cython.double[:, :] = b4[68:84]
+    cands: cython.double[:, :] = scratch[o4 + 68 : o4 + 84, 0:4]
     ncand: cython.Py_ssize_t = 0
-    unres: cython.double[:, :] = b4[84:88]
+    unres: cython.double[:, :] = scratch[o4 + 84 : o4 + 88, 0:4]
     nunres: cython.Py_ssize_t = 0
     # candidate boxes: 1e-7 of the curves' own extent, which for an ill-conditioned curve
     # (Chebyshev-like, polygon 1e9 times its curve) is far below the frame's size; a box of
@@ -424,7 +428,7 @@ def _pair_core(
         max(PA[0, 1], PA[na, 1], PB[0, 1], PB[nb, 1]) - min(PA[0, 1], PA[na, 1], PB[0, 1], PB[nb, 1]),
     )
     if ext < 0.25:  # the end points span less than a quarter of the frame: sample the curves
-        box: cython.double[:] = vecs[0:4, 3]
+        box: cython.double[:] = scratch[rv5 : rv5 + 4, 3]
         box[0] = _INF
         box[1] = -_INF
         box[2] = _INF
@@ -448,7 +452,8 @@ def _pair_core(
         while True:
             iters += 1
             if iters > budget:
-                unres = _room(unres, nunres + 1)
+                if nunres + 1 > unres.shape[0]:
+                    unres = _room(unres, nunres + 1)
                 unres[nunres, 0] = t0
                 unres[nunres, 1] = t1
                 unres[nunres, 2] = u0
@@ -472,7 +477,8 @@ def _pair_core(
             dyb = byh - byl
             if (_hypot_le(dxa, dya, epsb) and _hypot_le(dxb, dyb, epsb)) or (
                     t1 - t0 <= 1e-15 and u1 - u0 <= 1e-15):
-                cands = _room(cands, ncand + 1)
+                if ncand + 1 > cands.shape[0]:
+                    cands = _room(cands, ncand + 1)
                 cands[ncand, 0] = t0
                 cands[ncand, 1] = t1
                 cands[ncand, 2] = u0
@@ -529,14 +535,16 @@ def _pair_core(
             exa = hypot(dxa, dya)
             exb = hypot(dxb, dyb)
             if wida <= tl and widb <= tl and exa <= 4.0 * exb + tl and exb <= 4.0 * exa + tl:
-                cands = _room(cands, ncand + 1)
+                if ncand + 1 > cands.shape[0]:
+                    cands = _room(cands, ncand + 1)
                 cands[ncand, 0] = t0
                 cands[ncand, 1] = t1
                 cands[ncand, 2] = u0
                 cands[ncand, 3] = u1
                 ncand += 1
                 break
-            stack = _room(stack, nstack + 2)
+            if nstack + 2 > stack.shape[0]:
+                stack = _room(stack, nstack + 2)
             if (exa >= exb and t1 - t0 > 1e-15) or u1 - u0 <= 1e-15:
                 tm = 0.5 * (t0 + t1)
                 stack[nstack, 0] = tm
@@ -556,7 +564,8 @@ def _pair_core(
         if iters > budget:
             while nstack > 0:
                 nstack -= 1
-                unres = _room(unres, nunres + 1)
+                if nunres + 1 > unres.shape[0]:
+                    unres = _room(unres, nunres + 1)
                 unres[nunres, :] = stack[nstack, :]
                 nunres += 1
 
@@ -567,7 +576,7 @@ def _pair_core(
     # union-find labels, held as doubles (exact integers) in the scratch buffer
     label: cython.double[:]
     if ncand <= _NSMALL:
-        label = vecs[0:ncand, 0]
+        label = scratch[rv5 : rv5 + ncand, 0]
     else:
         with cython.gil:
             label = np.empty(ncand)
@@ -604,7 +613,8 @@ def _pair_core(
     pts: cython.double[:, :] = b5[0 : 8 + ncand]
     npts = 0
     for k in range(nend):
-        pts = _room(pts, npts + 1)
+        if npts + 1 > pts.shape[0]:
+            pts = _room(pts, npts + 1)
         pts[npts, 0] = ends[k, 0]
         pts[npts, 1] = ends[k, 1]
         pts[npts, 2] = ends[k, 2]
@@ -612,9 +622,10 @@ def _pair_core(
         pts[npts, 4] = 2.0  # end points win merges
         npts += 1
     roots: cython.double[:, :] = b5[8 + ncand : 8 + ncand + ncand + 4, 0:3]
-    da: cython.double[:, :] = b6[0:ma]
-    db: cython.double[:, :] = b6[ma : ma + mb]
-    seeds: cython.double[:, :] = b2[2 * ma + 2 * mb : 2 * ma + 2 * mb + 16]  # grown per cluster if needed
+    da: cython.double[:, :] = scratch[r6 : r6 + ma, 0:6]
+    db: cython.double[:, :] = scratch[r6 + ma : r6 + ma + mb, 0:6]
+    # Newton seeds, grown per cluster if needed
+    seeds: cython.double[:, :] = scratch[o2 + 2 * ma + 2 * mb : o2 + 2 * ma + 2 * mb + 16, 0:2]
     for root_label in range(ncand):
         if label[root_label] != root_label:
             continue
@@ -642,7 +653,8 @@ def _pair_core(
         # near-tangency that may hold several roots) points along both diagonals
         wide = nmem >= 2 or ct1 - ct0 > 1e-6 or cu1 - cu0 > 1e-6
         nseed = (nmem + stride - 1) // stride + (10 if wide else 0)
-        seeds = _room(seeds, nseed)
+        if nseed > seeds.shape[0]:
+            seeds = _room(seeds, nseed)
         ks = 0
         cnt = 0
         for i in range(ncand):
@@ -698,7 +710,8 @@ def _pair_core(
                             roots[k, 2] = cert
                         break
                 if not dup:
-                    roots = _room(roots, nroots + 1)
+                    if nroots + 1 > roots.shape[0]:
+                        roots = _room(roots, nroots + 1)
                     roots[nroots, 0] = t
                     roots[nroots, 1] = u
                     roots[nroots, 2] = cert
@@ -706,7 +719,8 @@ def _pair_core(
         if nroots == 0:
             t, u, d = _closest(HA, HB, bt, bu, wa, wb, 60)
             if d <= tl:
-                pts = _room(pts, npts + 1)
+                if npts + 1 > pts.shape[0]:
+                    pts = _room(pts, npts + 1)
                 pts[npts, 0] = t
                 pts[npts, 1] = u
                 pts[npts, 2] = d
@@ -780,7 +794,8 @@ def _pair_core(
                     kind = k_tangent
                 elif sn < 1e-10:
                     kind = k_tangent
-                pts = _room(pts, npts + 1)
+                if npts + 1 > pts.shape[0]:
+                    pts = _room(pts, npts + 1)
                 pts[npts, 0] = roots[i, 0]
                 pts[npts, 1] = roots[i, 1]
                 pts[npts, 2] = 0.0
@@ -791,7 +806,8 @@ def _pair_core(
                 t, u, d = _closest(
                     HA, HB, 0.5 * (roots[i, 0] + roots[j, 0]), 0.5 * (roots[i, 1] + roots[j, 1]), wa, wb, 60
                 )
-                pts = _room(pts, npts + 1)
+                if npts + 1 > pts.shape[0]:
+                    pts = _room(pts, npts + 1)
                 pts[npts, 0] = t
                 pts[npts, 1] = u
                 pts[npts, 2] = d
@@ -803,7 +819,7 @@ def _pair_core(
     # ---------------------------------------------------------------- dedupe + emit
     keep: cython.double[:]  # 1.0: kept
     if npts <= _NSMALL:
-        keep = vecs[0:npts, 1]
+        keep = scratch[rv5 : rv5 + npts, 1]
     else:
         with cython.gil:
             keep = np.empty(npts)
