@@ -29,6 +29,7 @@ from typing import overload
 import numpy as np
 
 from ._checks import as_real_array, check_count, check_degree, check_finite, check_param, check_weights
+from ._kernels.batch import kernel_views
 from ._kernels.bezier import bernstein_product, decasteljau_rows
 from ._types import FloatArray, ParamsLike, PointsLike
 from .errors import (
@@ -154,7 +155,7 @@ class RationalBezier:
     relief_cad.errors.DegreeError: A curve needs at least 2 control points (degree >= 1), not 1.
     """
 
-    __slots__ = ("_h", "_points", "_weights", "_polynomial", "_hodo", "_sbox")
+    __slots__ = ("_h", "_points", "_weights", "_polynomial", "_hodo", "_sbox", "_kv")
 
     _h: FloatArray
     _points: FloatArray | None
@@ -164,6 +165,7 @@ class RationalBezier:
     # the sampled box of the default tolerance, filled on first use by
     # relief_cad._kernels.bezier.sampled_tolerance (False: a degenerate sample)
     _sbox: tuple[float, float, float, float, float, float, float, int] | bool | None
+    _kv: tuple[object, object] | None  # the control points and weights as the pair kernel takes them
 
     def __init__(self, control_points: PointsLike, weights: ParamsLike | None = None) -> None:
         pts = as_real_array(control_points, "control_points")
@@ -203,6 +205,7 @@ class RationalBezier:
         self._polynomial = None
         self._hodo = None
         self._sbox = None
+        self._kv = None
         for arr in (pts, w):
             if arr is not None:
                 arr.flags.writeable = False
@@ -653,6 +656,27 @@ class RationalBezier:
         w = np.array2string(self.weights, separator=", ", precision=6)
         return f"RationalBezier({pts}, weights={w})"
 
+    def __reduce__(self) -> tuple[object, tuple[object, ...]]:
+        """Pickle (and copy) the arrays of the curve, not its caches (kernel views do not pickle).
+
+        >>> import pickle
+        >>> c = RationalBezier([[0, 0], [1, 2], [2, 0]], [1, 0.5, 1])
+        >>> pickle.loads(pickle.dumps(c)) == c
+        True
+        """
+        return _restore, (type(self), self._h, self._points, self._weights)
+
+    def _kernel_views(self) -> tuple[object, object]:
+        """The control points and weights as the pair kernel takes them (made once, then kept).
+
+        See :func:`relief_cad._kernels.batch.kernel_views`: a planar curve's arrays are converted
+        for the compiled kernel once instead of on every :func:`~relief_cad.intersect` call.
+        """
+        kv = self._kv
+        if kv is None:
+            kv = self._kv = kernel_views(self.control_points, self.weights)
+        return kv
+
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, RationalBezier):
             return NotImplemented
@@ -660,3 +684,11 @@ class RationalBezier:
 
     def __hash__(self) -> int:
         return hash((self._h.shape, self._h.tobytes()))
+
+
+def _restore(cls: type[RationalBezier], h: FloatArray, pts: FloatArray | None,
+             w: FloatArray | None) -> RationalBezier:
+    """A curve from its pickled arrays (:meth:`RationalBezier.__reduce__`): the same bits, no checks."""
+    obj = cls.__new__(cls)
+    obj._set(h, pts, w)
+    return obj

@@ -374,17 +374,18 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
     # the default, or the given tol raised to the data's rounding level (one rule: resolve_tolerance;
     # _sampled_tolerance is its compiled default for two curves)
     ftol = (_sampled_tolerance((a, b)) if tol is None else None) or resolve_tolerance(check_tol(tol), a, b)
-    pb = b.control_points
-    # a RationalBezier's arrays are float64: the kernel takes them as they are (strided views too).
-    # Curves whose end points match within 2 tol (a margin for the exact rescaling of huge
-    # coordinates there) may coincide all along, the clipping's slowest case: the kernel returns
-    # None for them, and whole_overlap decides by geometry first
-    rows = intersect_one_kernel(pa, a.weights, pb, b.weights, ftol, nbudget, 2.0 * ftol)
+    # a RationalBezier's arrays go in as the kernel's own views, made once per curve (a numpy array
+    # would be converted on every call). Curves whose end points match within 2 tol (a margin for
+    # the exact rescaling of huge coordinates there) may coincide all along, the clipping's slowest
+    # case: the kernel returns None for them, and whole_overlap decides by geometry first
+    va, wa = a._kv or a._kernel_views()
+    vb, wb = b._kv or b._kernel_views()
+    rows = intersect_one_kernel(va, wa, vb, wb, ftol, nbudget, 2.0 * ftol)
     if rows is None:
         whole = whole_overlap(a, b, ftol)
         if whole is not None:
             return IntersectionList([whole], tol_used=ftol)
-        rows = intersect_one_kernel(pa, a.weights, pb, b.weights, ftol, nbudget)
+        rows = intersect_one_kernel(va, wa, vb, wb, ftol, nbudget)
     res = _rows_to_list(rows, ftol)
     if res.unresolved or needs_refining(a, b, res):
         res = finish(_with_tol(_refined(a, b, res, ftol), ftol), on_budget)

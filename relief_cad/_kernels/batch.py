@@ -190,11 +190,28 @@ def ends_match(
     return _ends_match(PA, PB, lim)
 
 
-# the scratch buffer of intersect_one_kernel, kept between calls (an allocation and its view cost
-# about half a microsecond, a quarter of a small pair's kernel time); None while a call uses it,
-# so that a call made meanwhile (another thread: the kernel runs without the GIL) makes its own
+# the scratch buffer of intersect_one_kernel and its typed view, kept between calls (an allocation
+# and its view cost about half a microsecond, a quarter of a small pair's kernel time); None while
+# a call uses them, so that a call made meanwhile (another thread: the kernel runs without the
+# GIL) makes its own
 _spare = cython.declare(object, None)
 _SPARE_ROWS = cython.declare(cython.Py_ssize_t, 256)
+
+
+def kernel_views(P: cython.const[cython.double][:, :], W: cython.const[cython.double][:]):
+    """``(P, W)`` as this module's own typed views (compiled), or as given (uncompiled).
+
+    A numpy array passed to :func:`intersect_one_kernel` is converted on every call (the buffer
+    protocol, a format check and a new view object: about 0.1 us per array, a quarter of a
+    small pair's call); a view this module made is taken as it is. A curve keeps its pair for
+    its next call (:meth:`relief_cad.RationalBezier._kernel_views`).
+    """
+    return P, W
+
+
+def _view(a: cython.double[:, :]):
+    """``a`` as this module's own typed view (compiled; as given uncompiled): see :func:`kernel_views`."""
+    return a
 
 
 def intersect_one_kernel(
@@ -221,14 +238,16 @@ def intersect_one_kernel(
     if _apart(PA, PB, tol):
         return _NO_ROWS
     rows: cython.Py_ssize_t = scratch_rows(PA.shape[0], PB.shape[0])
-    buf = _spare
+    spare = _spare
     _spare = None
-    if buf is None or buf.shape[0] < rows + _SPARE_ROWS:
+    if spare is None or spare[0].shape[0] < rows + _SPARE_ROWS:
         buf = np.empty((rows + _SPARE_ROWS, RES_COLS))
+        spare = (buf, _view(buf))
+    buf = spare[0]
     res = None
     n: cython.Py_ssize_t
     try:
-        scratch: cython.double[:, :] = buf
+        scratch: cython.double[:, :] = spare[1]  # this module's own view: taken as it is
         rv: cython.double[:, :] = scratch[rows:]
         while True:
             with cython.nogil:
@@ -242,4 +261,4 @@ def intersect_one_kernel(
             return _NO_ROWS
         return np.array(buf[rows : rows + n]) if res is None else res[:n]
     finally:
-        _spare = buf
+        _spare = spare

@@ -359,3 +359,21 @@ def test_concurrent_calls_give_the_serial_results() -> None:
         for _ in range(3):
             parts = list(pool.map(run, [pairs[k::4] for k in range(4)]))
             assert [parts[k % 4][k // 4] for k in range(len(pairs))] == serial
+
+
+def test_curves_pickle_and_copy_after_intersect_with_the_same_results() -> None:
+    """``intersect`` keeps each curve's kernel views on it (made once); they do not pickle, so a
+    curve pickles and copies its arrays only: the copy is equal and gives the same bits."""
+    import copy
+    import pickle
+
+    a = RationalBezier([[0.0, 0.0], [1.0, 2.0], [2.0, -1.0], [3.0, 1.0]], [1.0, 0.7, 1.3, 1.0])
+    b = RationalBezier(np.array([[0.0, 1.0], [3.0, 0.0]]) / 3.0 * np.array([3.0, 1.0]))
+    first = [(r.t, r.u, tuple(r.point)) for r in intersect(a, b)]
+    assert a._kv is not None and b._kv is not None
+    assert np.shares_memory(np.asarray(a._kv[0]), a.control_points)  # views of the curve's own arrays
+    for twin in (pickle.loads(pickle.dumps(a)), copy.copy(a), copy.deepcopy(a)):
+        assert twin == a and twin._kv is None
+        assert np.array_equal(twin.control_points, a.control_points)
+        assert np.array_equal(twin.weights, a.weights)
+        assert [(r.t, r.u, tuple(r.point)) for r in intersect(twin, b)] == first
