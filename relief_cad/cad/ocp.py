@@ -462,23 +462,64 @@ def _bspline_segments(curve: Any, first: float, last: float, m: np.ndarray | Non
             return [Segment(h, first, last)]
         piece = _make_curve(h).segment((first - k0) / (k1 - k0), (last - k0) / (k1 - k0))
         return [Segment.from_curve(piece, first, last)]
+    periodic = curve.IsPeriodic()  # where OCCT 8.0 may leave poles unset: see _on_knot
     try:
-        conv = GeomConvert_BSplineCurveToBezierCurve(curve, first, last, 1e-12)
+        conv = GeomConvert_BSplineCurveToBezierCurve(
+            curve, _on_knot(curve, first) if periodic else first, _on_knot(curve, last) if periodic else last,
+            _KNOT_TOL)
     except Exception as exc:  # noqa: BLE001 - OCCT raises Standard_Failure subclasses
         raise OcctError(f"GeomConvert_BSplineCurveToBezierCurve failed on [{first}, {last}]: {exc}") from exc
     n = conv.NbArcs()
     knots = Array1OfReal(1, n + 1)
     conv.Knots(knots)
     ks = [knots.Value(i) for i in range(1, n + 2)]
-    ks[0] = first
-    ks[-1] = last
+    size = 0.0  # the largest coordinate of the curve's poles (for _check_arc)
+    if periodic:
+        size = max(abs(c) for i in range(1, curve.NbPoles() + 1) for c in curve.Pole(i).Coord())
     out = []
     for i in range(n):
         if ks[i + 1] <= ks[i]:
             continue
-        h = _apply(_bezier_rows(conv.Arc(i + 1)), m)
-        out.append(_segment(h, ks[i], ks[i + 1]))
+        arc = conv.Arc(i + 1)
+        if periodic:
+            _check_arc(curve, arc, ks[i], ks[i + 1], size)
+        h = _apply(_bezier_rows(arc), m)
+        out.append(_segment(h, first if i == 0 else ks[i], last if i == n - 1 else ks[i + 1]))
     return out
+
+
+_KNOT_TOL = 1e-12  # the parametric tolerance given to GeomConvert_BSplineCurveToBezierCurve
+
+
+def _on_knot(curve: Any, x: float) -> float:
+    """``x``, or the knot of ``curve`` within :data:`_KNOT_TOL` of it.
+
+    OCCT 8.0's ``GeomConvert_BSplineCurveToBezierCurve`` returns arcs whose poles are
+    uninitialised memory when a bound lies a few ulps off a knot of a periodic curve (an edge
+    range read back from a BREP file, 3e-19 below the last knot): the bound is put on the knot.
+    Periodic curves only (and :func:`_check_arc` on their arcs): the failure was seen on them,
+    and the two checks would add a third to the conversion of a glyph's 10,000 spline pieces.
+    """
+    for i in range(1, curve.NbKnots() + 1):
+        k = curve.Knot(i)
+        if abs(x - k) <= _KNOT_TOL:
+            return float(k)
+    return x
+
+
+def _check_arc(curve: Any, arc: Any, k0: float, k1: float, size: float) -> None:
+    """Raise :class:`OcctError` unless the Bézier ``arc`` runs on ``curve`` over ``[k0, k1]``.
+
+    Its ends and its middle are compared with the curve's points there, to 1e-7 of ``size``
+    (the largest coordinate of the curve's poles): a guard against poles OCCT left unset (see
+    :func:`_on_knot`), which would be taken for the curve and give wrong intersections instead
+    of an error.
+    """
+    for s, k in ((0.0, k0), (0.5, 0.5 * (k0 + k1)), (1.0, k1)):
+        gap = arc.Value(s).Distance(curve.Value(k))
+        if not gap <= 1e-7 * size:
+            raise OcctError(f"GeomConvert_BSplineCurveToBezierCurve gave an arc off the curve over "
+                            f"[{k0}, {k1}] (expected its point at {s} on the curve; it is {gap:.3g} away)")
 
 
 def _approx_segments(

@@ -469,3 +469,58 @@ def test_located_copies_each_get_their_own_placement() -> None:
                         assert np.allclose(seg.curve(s), (p.X(), p.Y(), p.Z()), atol=1e-9)
                         checked += 1
     assert checked > 1000
+
+
+# a periodic cubic B-spline of size 1e-4 (from a face read back from a BREP file) whose edge ends 3e-19
+# below the curve's last knot: there OCCT 8.0's GeomConvert_BSplineCurveToBezierCurve sometimes
+# returns arcs whose poles are uninitialised memory (found by an arrangement fuzz)
+_PERIODIC_POLES = [(5.3657952229674233e-05, -2.8203958406125957e-05), (8.1744283514574836e-05, 3.9921248775447399e-05),
+                   (6.935044460724103e-05, 8.9689937922855621e-05), (-3.507654704181075e-05, 8.6837118864465927e-05),
+                   (-6.9185824147269075e-05, 2.0546917843323171e-05), (-0.00010870560455424085, -4.7739911889688697e-05),
+                   (-2.626422689139772e-05, -0.00013714650224256125), (5.1077736391146336e-05, -5.5761344274738888e-05)]
+_PERIODIC_KNOTS = [0.0, 6.3250874293420571e-05, 0.00015584514969939323, 0.00022040524574697265,
+                   0.00028182662611769317, 0.00037817846896222806, 0.00045452773090633831, 0.00053051882923846327]
+
+
+def _periodic_spline() -> Geom_BSplineCurve:
+    poles, knots, mults = Array1OfPnt(1, 8), Array1OfReal(1, 8), Array1OfInteger(1, 8)
+    for i, ((x, y), k) in enumerate(zip(_PERIODIC_POLES, _PERIODIC_KNOTS, strict=True)):
+        poles.SetValue(i + 1, gp_Pnt(x, y, 0.0))
+        knots.SetValue(i + 1, k)
+        mults.SetValue(i + 1, 2 if i in (0, 7) else 1)
+    return Geom_BSplineCurve(poles, knots, mults, 3, True)
+
+
+def test_bspline_bound_a_few_ulps_off_a_knot_is_converted_on_the_curve() -> None:
+    """The bound 3e-19 below the last knot is put on the knot before OCCT converts; every piece of
+    50 conversions (the bad poles came with some heap states) lies on the curve, the edge's own
+    range kept as the pieces' parameters."""
+    curve = _periodic_spline()
+    last = 0.000530518829238463  # the BREP file's rounding of the last knot
+    assert 0.0 < _PERIODIC_KNOTS[-1] - last < 1e-18
+    assert ocp._on_knot(curve, last) == _PERIODIC_KNOTS[-1]
+    assert ocp._on_knot(curve, 0.5 * last) == 0.5 * last  # far from every knot: unchanged
+    edge = BRepBuilderAPI_MakeEdge(curve, 0.0, last).Edge()
+    adaptor = BRepAdaptor_Curve(edge)
+    for _ in range(50):
+        segs = ocp.edge_segments(edge)
+        assert segs[0].t0 == 0.0 and segs[-1].t1 == last
+        for seg in segs:
+            assert np.all(seg.homogeneous[:, 2] == 0.0)  # in the plane z = 0, as the curve
+            for t, s in ((seg.t0, 0.0), (0.5 * (seg.t0 + seg.t1), 0.5), (seg.t1, 1.0)):
+                assert np.allclose(seg.curve(s), adaptor.Value(t).Coord(), rtol=0.0, atol=1e-15)
+
+
+def test_an_arc_off_its_curve_is_an_error_not_an_answer() -> None:
+    """The guard on OCCT's Bézier arcs: an arc that does not run on the curve raises OcctError."""
+    from OCP.GeomConvert import GeomConvert_BSplineCurveToBezierCurve
+
+    from relief_cad.errors import OcctError
+
+    curve = _periodic_spline()
+    conv = GeomConvert_BSplineCurveToBezierCurve(curve)
+    ks = _PERIODIC_KNOTS
+    size = max(abs(c) for xy in _PERIODIC_POLES for c in xy)
+    ocp._check_arc(curve, conv.Arc(2), ks[1], ks[2], size)  # the right arc: no error
+    with pytest.raises(OcctError, match="off the curve"):
+        ocp._check_arc(curve, conv.Arc(3), ks[1], ks[2], size)  # its neighbour
