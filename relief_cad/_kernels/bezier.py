@@ -109,6 +109,13 @@ def _rounds(H: cython.const[cython.double][:, :], t: cython.double, B: cython.do
     for i in range(n + 1):
         for c in range(k):
             B[i, c] = H[i, c]
+    if k == 3:  # planar rows (w x, w y, w), written out: the same operations, a third of the time
+        for r in range(1, n):
+            for i in range(n + 1 - r):
+                B[i, 0] = s * B[i, 0] + t * B[i + 1, 0]
+                B[i, 1] = s * B[i, 1] + t * B[i + 1, 1]
+                B[i, 2] = s * B[i, 2] + t * B[i + 1, 2]
+        return
     for r in range(1, n):
         for i in range(n + 1 - r):
             for c in range(k):
