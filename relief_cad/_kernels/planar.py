@@ -831,6 +831,7 @@ def _pair_core(
         for j in range(i + 1, npts):
             if not keep[j]:
                 continue
+            noise = False  # a crossing root merged into an end contact away from it
             dt = abs(pts[i, 0] - pts[j, 0])
             du = abs(pts[i, 1] - pts[j, 1])
             if dt <= 1e-9 and du <= 1e-9:
@@ -860,6 +861,7 @@ def _pair_core(
             ):
                 # one contact if the curves stay within tol all along between them
                 same = True
+                noise = True
                 for q in range(1, 8):
                     f = q / 8.0
                     tm = pts[i, 0] + f * (pts[j, 0] - pts[i, 0])
@@ -871,13 +873,16 @@ def _pair_core(
             else:
                 same = False
             if same:
+                # the kept point takes the other's kind if it has none, but a crossing root near an
+                # end contact is the rounding noise of a tangent meeting there (see _two_roots): the
+                # end's own angle decides its kind
                 if pts[j, 4] > pts[i, 4]:
-                    if pts[j, 3] < 0.0 and pts[i, 3] >= 0.0:
+                    if pts[j, 3] < 0.0 and pts[i, 3] >= 0.0 and not (noise and pts[i, 3] == k_crossing):
                         pts[j, 3] = pts[i, 3]
                     keep[i] = 0.0
                     break
                 else:
-                    if pts[i, 3] < 0.0 and pts[j, 3] >= 0.0:
+                    if pts[i, 3] < 0.0 and pts[j, 3] >= 0.0 and not (noise and pts[j, 3] == k_crossing):
                         pts[i, 3] = pts[j, 3]
                     keep[j] = 0.0
     if nres + npts + nov + nunres > rv.shape[0]:

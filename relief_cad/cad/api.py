@@ -713,6 +713,7 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
                 continue
         merged.append(r)
     points: list[_Raw] = []
+    crossings: list[int] = []  # per kept point: the distinct crossings it stands for
     for r in sorted((r for r in raws if r.kind != "overlap"), key=lambda r: r.distance):
         t, u = r.t, r.u
         if same:
@@ -731,10 +732,23 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
             continue
         if any(_inside(o, r, tol) for o in merged):
             continue
-        if any(_near(p.point, r.point, tol) for p in points):
-            continue
-        points.append(r)
-    return merged + points
+        k = next((k for k, p in enumerate(points) if _near(p.point, r.point, tol)), -1)
+        if k < 0:
+            points.append(r)
+            crossings.append(1 if r.kind == "crossing" else 0)
+        elif r.kind == "crossing" and points[k].kind == "crossing" and not _same_place(points[k], r, tol):
+            crossings[k] += 1  # another crossing within tol of this one (not a copy from a segment joint)
+    # an even number of crossings within tol of each other is a touch: b crosses a and back
+    return merged + [_Raw(p.ea, p.eb, p.t, p.u, p.point, "tangent", p.distance) if n % 2 == 0 and n else p
+                     for p, n in zip(points, crossings, strict=True)]
+
+
+def _same_place(p: _Raw, r: _Raw, tol: float) -> bool:
+    """True when two points of one edge pair are one point found twice (within 1e-3 tol).
+
+    By place, not parameter: a crossing at a closed edge's seam comes at both of its ends.
+    """
+    return math.dist(p.point, r.point) <= 1e-3 * tol
 
 
 def _close_params(u_prev: float, u_next: float, eb: _EdgeInfo, ptol: float) -> bool:
