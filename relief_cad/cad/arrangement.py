@@ -89,6 +89,8 @@ class _Graph:
     cuts: list[_Cut] = field(default_factory=list)
     links: list[tuple[int, int]] = field(default_factory=list)  # cuts that are one vertex
     overlaps: int = 0
+    # tangent contacts inside both edges: (cut on edge i, edge i, t, edge j, u); see _touch_spread
+    touches: list[tuple[int, int, float, int, float]] = field(default_factory=list)
     tol: float = 0.0
     flavour: str = "ocp"
     frame: np.ndarray | None = None  # the common 2D frame of all edges (see api._common_frame), if any
@@ -137,7 +139,15 @@ def _graph(a: Any, b: Any, tol: float | None) -> tuple[_Graph, int]:
                 _add_pair(graph, i, t, j, u, values(i, t))
         else:
             _add_pair(graph, i, r.t, j, r.u, r.point)
+            if r.kind == "tangent" and _inside_edge(r.ea, r.t) and _inside_edge(r.eb, r.u):
+                graph.touches.append((len(graph.cuts) - 2, i, float(r.t), j, float(r.u)))
     return graph, offset
+
+
+def _inside_edge(info: Any, t: float) -> bool:
+    """True when the edge goes on at both sides of ``t``: inside its range, or anywhere on a closed edge."""
+    v0, v1 = TopExp.FirstVertex_s(info.edge), TopExp.LastVertex_s(info.edge)
+    return bool(info.first < t < info.last or (not v0.IsNull() and v0.IsSame(v1)))
 
 
 def _add_pair(graph: _Graph, i: int, t: float, j: int, u: float, p: tuple[float, float, float]) -> None:
@@ -193,6 +203,10 @@ def _vertices(graph: _Graph, values: _Values) -> tuple[np.ndarray, list[Any], np
     centres = sums / np.bincount(labels, minlength=n)[:, None]
     errors = np.zeros(n)
     np.maximum.at(errors, labels, np.linalg.norm(on_curve - centres[labels], axis=1))
+    for cut, i, t, j, u in graph.touches:
+        label = labels[cut]
+        for q in _touch_spread(graph, i, t, j, u):
+            errors[label] = max(errors[label], math.dist(q, centres[label]))
     floor = Precision.Confusion_s()
     builder = BRep_Builder()
     vertices = []
@@ -202,6 +216,37 @@ def _vertices(graph: _Graph, values: _Values) -> tuple[np.ndarray, list[Any], np
         builder.MakeVertex(v, gp_Pnt(*centre), max(floor, error * (1.0 + 1e-9)))
         vertices.append(v)
     return labels, vertices, centres
+
+
+def _touch_spread(graph: _Graph, i: int, t: float, j: int, u: float) -> list[tuple[float, float, float]]:
+    """The points where edges ``i`` and ``j`` really meet around their tangent contact at ``(t, u)``.
+
+    A touch within tol may hide two crossings: circles 1e-9 into each other cross 2.2e-5 from
+    the contact on either side, and a vertex of tolerance 1e-7 there leaves the wires crossing
+    outside it (``BRepCheck_Analyzer``: intersecting wires). The pair is intersected again at a
+    thousandth of the tolerance; its points joined to the contact by a stretch where the edges stay
+    within tol are the contact's own, and the vertex's tolerance is measured to them as well.
+    """
+    values = graph.values
+    fine = api.intersections(graph.edges[i], graph.edges[j], tol=1e-3 * graph.tol)
+    out = []
+    for r in fine:
+        if r.kind != "overlap" and _joined(graph, i, t, r.t, j, u, r.u):
+            out.append(values(i, r.t))
+            out.append(values(j, r.u))
+    return out
+
+
+def _joined(graph: _Graph, i: int, t0: float, t1: float, j: int, u0: float, u1: float) -> bool:
+    """True when edge ``i`` over ``[t0, t1]`` stays within tol of edge ``j`` (7 samples, projected)."""
+    curve, _ = _global_curve(graph.edges[j])
+    for k in range(1, 8):
+        f = k / 8.0
+        proj = GeomAPI_ProjectPointOnCurve(gp_Pnt(*graph.values(i, t0 + f * (t1 - t0))), curve,
+                                           min(u0, u1) - abs(u1 - u0), max(u0, u1) + abs(u1 - u0))
+        if proj.NbPoints() == 0 or proj.LowerDistance() > graph.tol:
+            return False
+    return True
 
 
 # --------------------------------------------------------------------------- pieces

@@ -179,6 +179,25 @@ def test_part_of_size_1e_6_is_cut_where_occt_can_keep_pieces_apart(kind):
     assert_connected(arrange([a, b]), tol=1e-7)
 
 
+@pytest.mark.parametrize("depth", [1e-9, 1e-10])
+def test_touch_hiding_two_crossings_gets_a_vertex_covering_them(depth):
+    """A circle inside another, pushed ``depth`` through it: within tol (1e-7) one tangent contact,
+    but the circles cross on either side of it (2.2e-5 away for 1e-9). The shared vertex's tolerance
+    reaches those crossings, so the face with the hole is valid (it was not: intersecting wires)."""
+    big = bd.Circle(1.0).face()
+    small = bd.Circle(0.2).face().moved(bd.Location((0.8 + depth, 0, 0)))
+    d = 0.8 + depth  # the circles' true crossings: x, +-y
+    x = (d * d + 1.0 - 0.04) / (2 * d)
+    reach = math.dist((x, math.sqrt(1.0 - x * x)), (1.0, 0.0))
+    pieces = arrange([big, small])
+    touch = [v for p in pieces for v in ends(p) if np.allclose(BRep_Tool.Pnt_s(v).Coord(), (1, 0, 0), atol=1e-6)]
+    assert len(touch) >= 2 and all(touch[0].IsSame(v) for v in touch)  # one vertex, both circles' ends
+    assert 0.999 * reach <= BRep_Tool.Tolerance_s(touch[0]) <= 1.1 * reach
+    faces = arrange([big, small], faces=True)
+    assert len(faces) == 2 and all(BRepCheck_Analyzer(raw(f)).IsValid() for f in faces)
+    assert sorted(area(f) for f in faces) == pytest.approx(sorted([math.pi * 0.04, math.pi * 0.96]), rel=1e-9)
+
+
 def test_self_intersection_of_one_edge_is_cut():
     eight = bd.Edge.make_spline([(0, 0), (1, 1), (2, 0), (1, -1), (0, 0.0001)][:4] + [(0, -0.5)])
     loop = bd.Edge.make_spline([(0, 0), (2, 1), (2, -1), (0, 1)])  # crosses itself once
