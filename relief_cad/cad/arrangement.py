@@ -229,17 +229,20 @@ def _touch_spread(graph: _Graph, i: int, t: float, j: int, u: float) -> list[tup
     """
     values = graph.values
     fine = api.intersections(graph.edges[i], graph.edges[j], tol=1e-3 * graph.tol)
+    curve_j, _ = _global_curve(graph.edges[j])
     out = []
     for r in fine:
-        if r.kind != "overlap" and _joined(graph, i, t, r.t, j, u, r.u):
+        if r.kind != "overlap" and _joined(graph, i, t, r.t, curve_j, u, r.u):
             out.append(values(i, r.t))
             out.append(values(j, r.u))
     return out
 
 
-def _joined(graph: _Graph, i: int, t0: float, t1: float, j: int, u0: float, u1: float) -> bool:
-    """True when edge ``i`` over ``[t0, t1]`` stays within tol of edge ``j`` (7 samples, projected)."""
-    curve, _ = _global_curve(graph.edges[j])
+def _joined(graph: _Graph, i: int, t0: float, t1: float, curve: Any, u0: float, u1: float) -> bool:
+    """True when edge ``i`` over ``[t0, t1]`` stays within tol of ``curve`` near ``[u0, u1]``.
+
+    ``curve`` is the other edge's global curve; 7 samples of edge ``i``, projected on it.
+    """
     for k in range(1, 8):
         f = k / 8.0
         proj = GeomAPI_ProjectPointOnCurve(gp_Pnt(*graph.values(i, t0 + f * (t1 - t0))), curve,
