@@ -139,15 +139,21 @@ def degenerated(*shapes: bd.Edge) -> bool:
     return any(BRep_Tool.Degenerated_s(e.wrapped) for e in shapes)
 
 
+def refused_degenerated(case: Case, call, a: bd.Edge, b: bd.Edge) -> bool:
+    """When ``a`` or ``b`` is a point, check that ``call(a, b)`` refuses it by name; True if so."""
+    if not degenerated(a, b):
+        return False
+    name = "a" if degenerated(a) else "b"
+    case.refuses(lambda: call(a, b), ValueError, f"shape {name}", "degenerated", error=ShapeError)
+    return True
+
+
 # at scale 1e-6 a line between two drawn points < 1e-7 apart (OCCT's Precision::Confusion) is a
 # degenerated edge, a point: that input must be refused by name (ShapeError), on either side
 @fuzz("cad: edge pairs (swap, reversal, determinism)", edge_pairs(), examples=500, min_answered=0.9)
 def test_fuzz_edge_pairs(case: Case, drawn: tuple[bd.Edge, bd.Edge, float]) -> None:
     a, b, scale = drawn
-    if degenerated(a, b):
-        name = "a" if degenerated(a) else "b"
-        case.refuses(lambda: api.intersections(a, b), ValueError, f"shape {name}", "degenerated",
-                     error=ShapeError)
+    if refused_degenerated(case, api.intersections, a, b):
         return
     ab = api.intersections(a, b)
     check_results(case, ab, [a], [b], scale)
@@ -170,9 +176,7 @@ def test_fuzz_edge_pairs(case: Case, drawn: tuple[bd.Edge, bd.Edge, float]) -> N
 def test_fuzz_moved_split_occt(case: Case, drawn: tuple[bd.Edge, bd.Edge, float], shift: tuple,
                                angles: tuple) -> None:
     a, b, scale = drawn
-    if degenerated(a, b):
-        name = "a" if degenerated(a) else "b"
-        case.refuses(lambda: split(a, b), ValueError, f"shape {name}", "degenerated", error=ShapeError)
+    if refused_degenerated(case, split, a, b):
         return
     ab = api.intersections(a, b)
     loc = bd.Location(tuple(scale * s for s in shift), angles)
