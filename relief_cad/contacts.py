@@ -45,6 +45,7 @@ from numpy.polynomial import polynomial as P
 from ._kernels.batch import ends_match
 from ._kernels.bezier import max_abs
 from ._kernels.certify import fold_bisect
+from ._kernels.constants import SAFE_EXPONENT as _SAFE_EXPONENT
 from ._kernels.polish import foot_newton, foot_seeds, surely_far
 from ._types import FloatArray
 from .curves import RationalBezier, _decasteljau
@@ -351,7 +352,7 @@ def _fold(c: RationalBezier, t: float, u: float) -> float | None:
 
 
 # ---------------------------------------------------------------------------- range
-SAFE_EXPONENT = 100
+SAFE_EXPONENT = _SAFE_EXPONENT
 """Coordinates of magnitude 2**-100 .. 2**100 are used as they are; others are scaled first.
 
 The geometry here (and the space kernel's Gauss-Newton step) forms squared distances and products

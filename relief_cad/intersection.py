@@ -98,7 +98,7 @@ from .errors import (
 )
 from .pieces import monotone_pieces
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
-from .space import intersect_space
+from .space import intersect_space, space_pair
 from .tolerances import (
     _pairs_default_tolerances,
     _sampled_tolerance,
@@ -366,8 +366,10 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
     nbudget = DEFAULT_BUDGET if budget is None else check_budget(budget)
     pa = a.control_points
     if pa.shape[1] == 3 or (b is not None and b.control_points.shape[1] == 3):
-        result: IntersectionList = intersect_space(a, b, tol=tol, budget=budget, on_budget=on_budget)
-        return result
+        if b is None:
+            result: IntersectionList = intersect_space(a, b, tol=tol, budget=budget, on_budget=on_budget)
+            return result
+        return space_pair(a, b, check_tol(tol), nbudget, on_budget)
     if b is None:
         ftol = resolve_tolerance(check_tol(tol), a)
         return finish(_with_tol(_self_planar(a.control_points, a.weights, ftol, nbudget), ftol), on_budget)

@@ -44,7 +44,7 @@ from typing import Literal
 import numpy as np
 from numpy.typing import NDArray
 
-from ._checks import check_budget, check_on_budget, check_span, check_tol
+from ._checks import OnBudget, check_budget, check_on_budget, check_span, check_tol
 from ._kernels import (
     KIND_OVERLAP,
     KIND_UNRESOLVED,
@@ -53,6 +53,7 @@ from ._kernels import (
     _space_frame,
     intersect_one_kernel,
     space_pair_kernel,
+    space_pair_rows,
 )
 from ._kernels.bezier import max_abs
 from ._types import FloatArray
@@ -431,21 +432,44 @@ def intersect_space(
     if b is None:
         tol_s = resolve_tolerance(given, a3)
         items, boxes = _rows_to_results(_self_rows(a3, tol_s, nbudget))
-        items = refine_self(a3, items, tol_s)
-    else:
-        b3 = b if b.dim == 3 else b.embedded(3)
-        tol_s = (_sampled_tolerance((a3, b3)) if given is None else None) or resolve_tolerance(given, a3, b3)
-        whole = whole_overlap(a3, b3, tol_s)  # coincident curves (closed ones too) by geometry
+        return _finished(refine_self(a3, items, tol_s), boxes, tol_s, on_budget)
+    return space_pair(a3, b, given, nbudget, on_budget)
+
+
+def space_pair(a: RationalBezier, b: RationalBezier, tol: float | None, budget: int,
+               on_budget: OnBudget) -> IntersectionList:
+    """:func:`intersect_space` of two curves, ``tol``, ``budget`` and ``on_budget`` already checked.
+
+    The one path of a pair of space curves (a planar one is placed in z = 0), for
+    :func:`intersect_space` and :func:`relief_cad.intersect`. ``tol`` None: the default tolerance.
+    Most pairs take one kernel call (:func:`relief_cad._kernels.space.space_pair_rows`); curves whose
+    end points match (they may coincide all along: :func:`~relief_cad.contacts.whole_overlap`),
+    coordinates out of the kernel's safe range, and pairs whose every frame shows an artefact take
+    the general path (:func:`_pair`).
+    """
+    ha, hb = a.homogeneous, b.homogeneous
+    if ha.shape[1] != 4 or hb.shape[1] != 4:  # a planar curve goes in z = 0 (a space curve as it is)
+        return space_pair(a.embedded(3), b.embedded(3), tol, budget, on_budget)
+    tol_s = (_sampled_tolerance((a, b)) if tol is None else None) or resolve_tolerance(tol, a, b)
+    rows = space_pair_rows(ha, hb, tol_s, budget, 2.0 * tol_s)
+    if rows is None:
+        whole = whole_overlap(a, b, tol_s)  # coincident curves (closed ones too) by geometry
         if whole is not None:
             return IntersectionList([whole], tol_used=tol_s)
-        rows = _pair(a3.homogeneous, b3.homogeneous, tol_s, nbudget)
-        if rows.shape[0] == 0:  # most pairs: nothing to build, sort or check
-            return IntersectionList((), (), tol_s)
-        items, boxes = _rows_to_results(rows)
-        if needs_refining(a3, b3, items):
-            items = refine_contacts(a3, b3, items, tol_s)
+        rows = _pair(ha, hb, tol_s, budget)
+    if rows.shape[0] == 0:  # most pairs: nothing to build, sort or check
+        return IntersectionList((), (), tol_s)
+    items, boxes = _rows_to_results(rows)
+    if needs_refining(a, b, items):
+        items = refine_contacts(a, b, items, tol_s)
+    return _finished(items, boxes, tol_s, on_budget)
+
+
+def _finished(items: list[Result], boxes: list[ParameterBox], tol: float,
+              on_budget: OnBudget) -> IntersectionList:
+    """The results sorted by ``t`` (an overlap by its first ``t``), then :func:`relief_cad.results.finish`."""
     items.sort(key=lambda r: r.t if isinstance(r, Intersection) else r.t[0])
-    return finish(IntersectionList(items, boxes, tol_s), on_budget)
+    return finish(IntersectionList(items, boxes, tol), on_budget)
 
 
 def _deprecated_span(k: object) -> None:

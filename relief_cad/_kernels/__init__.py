@@ -62,6 +62,7 @@ __all__ = [
     "intersect_one_kernel",
     "intersect_pair_kernel",
     "space_pair_kernel",
+    "space_pair_rows",
 ]
 
 #: the compiled modules, in dependency order (``constants`` is plain Python, never compiled)
@@ -125,4 +126,4 @@ from .constants import (  # noqa: E402
     STATUS_OK,
 )
 from .planar import intersect_pair_kernel  # noqa: E402
-from .space import _space_frame, _space_project, space_pair_kernel  # noqa: E402,F401
+from .space import _space_frame, _space_project, space_pair_kernel, space_pair_rows  # noqa: E402,F401

@@ -1,2 +1,4 @@
 # pure-Python mode: the pair driver and its helpers are called as C functions (see planar.pxd)
 from relief_cad._kernels.planar cimport _apart, _box, _pair_core, scratch_rows
+# the end-point gate, called by the space kernel as a C function (see space.pxd)
+cpdef bint _ends_match(const double[:, :] PA, const double[:, :] PB, double lim) noexcept

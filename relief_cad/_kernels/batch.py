@@ -153,8 +153,6 @@ def _sort_by_t(rv: cython.double[:, :], first: cython.Py_ssize_t, last: cython.P
             j -= 1
 
 
-@cython.cfunc
-@cython.exceptval(check=False)
 def _ends_match(
     PA: cython.const[cython.double][:, :], PB: cython.const[cython.double][:, :], lim: cython.double
 ) -> cython.bint:

@@ -18,6 +18,10 @@ _ROUND = 64.0 * _EPS  # rounding level of a residual, relative to the frame size
 SPACE_COLS = 9
 STATUS_OK = 0
 STATUS_ARTEFACT = 1
+STATUS_ENDS_MATCH = 2  # the end points match: the caller tests coincidence first
 _SPACE_TANGENT_SIN = 1e-6
 _SPACE_OVERLAP_SAMPLES = 17
 _SPACE_N_FRAMES = 4
+# coordinates of magnitude 2**-100 .. 2**100 are used as they are, others scaled first
+# (relief_cad.contacts.range_exponent)
+SAFE_EXPONENT = 100

@@ -18,6 +18,7 @@ import numpy as np
 from cython.cimports.libc.math import pow as c_pow
 from cython.cimports.libc.math import sqrt
 
+from .batch import _ends_match
 from .constants import (
     _EPS,
     _SPACE_N_FRAMES,
@@ -28,8 +29,10 @@ from .constants import (
     KIND_TANGENT,
     KIND_UNRESOLVED,
     RES_COLS,
+    SAFE_EXPONENT,
     SPACE_COLS,
     STATUS_ARTEFACT,
+    STATUS_ENDS_MATCH,
     STATUS_OK,
 )
 from .planar import intersect_pair_kernel
@@ -668,134 +671,158 @@ def _space_add(
 
 @cython.cfunc
 @cython.exceptval(check=False)
-def _space_half(
-    H: cython.const[cython.double][:, :],
-    L: cython.double[:, ::1],
-    R: cython.double[:, ::1],
+def _half_into(
+    S: cython.double[:, :, ::1],
+    src: cython.Py_ssize_t,
+    r0: cython.Py_ssize_t,
+    n: cython.Py_ssize_t,
+    left: cython.Py_ssize_t,
+    right: cython.Py_ssize_t,
     wk: cython.double[:, ::1],
 ) -> cython.void:
-    """Split homogeneous rows ``H`` at t = 1/2 into ``L`` and ``R`` (de Casteljau; ``wk``: scratch)."""
+    """Halve the curve in rows ``r0 : r0 + n`` of slot ``src`` into those rows of slots ``left``, ``right``.
+
+    de Casteljau at t = 1/2 on homogeneous rows (``wk``: n rows of scratch); ``src`` may be
+    ``left`` or ``right`` (its rows are read into ``wk`` first). Indices, not slices: a slice of a
+    typed view costs two atomic updates of its buffer count.
+    """
     i: cython.Py_ssize_t
     j: cython.Py_ssize_t
     r: cython.Py_ssize_t
-    n: cython.Py_ssize_t = H.shape[0] - 1
-    for i in range(n + 1):
+    m: cython.Py_ssize_t = n - 1
+    for i in range(n):
         for j in range(4):
-            wk[i, j] = H[i, j]
+            wk[i, j] = S[src, r0 + i, j]
     for j in range(4):
-        L[0, j] = wk[0, j]
-        R[n, j] = wk[n, j]
-    for r in range(1, n + 1):
-        for i in range(n + 1 - r):
+        S[left, r0, j] = wk[0, j]
+        S[right, r0 + m, j] = wk[m, j]
+    for r in range(1, m + 1):
+        for i in range(m + 1 - r):
             for j in range(4):
                 wk[i, j] = 0.5 * (wk[i, j] + wk[i + 1, j])
         for j in range(4):
-            L[r, j] = wk[0, j]
-            R[n - r, j] = wk[n - r, j]
+            S[left, r0 + r, j] = wk[0, j]
+            S[right, r0 + m - r, j] = wk[m - r, j]
 
 
 @cython.cfunc
 @cython.exceptval(check=False)
-def _space_box(
-    H: cython.const[cython.double][:, :], lo: cython.double[:], hi: cython.double[:]
-) -> cython.void:
-    """Box ``lo``-``hi`` (x, y, z) of the control points (contains the curve)."""
-    i: cython.Py_ssize_t
-    j: cython.Py_ssize_t
-    x: cython.double
-    for j in range(3):
-        lo[j] = _INF
-        hi[j] = -_INF
-    for i in range(H.shape[0]):
-        for j in range(3):
-            x = H[i, j] / H[i, 3]
-            lo[j] = min(lo[j], x)
-            hi[j] = max(hi[j], x)
-
-
-@cython.cfunc
-@cython.exceptval(check=False)
-def _copy_rows(src: cython.const[cython.double][:, :], dst: cython.double[:, ::1]) -> cython.void:
-    i: cython.Py_ssize_t
-    j: cython.Py_ssize_t
-    for i in range(src.shape[0]):
-        for j in range(4):
-            dst[i, j] = src[i, j]
-
-
-@cython.cfunc
-@cython.exceptval(check=False)
-def _push(
-    stack: cython.double[:, :, ::1],
-    top: cython.Py_ssize_t,
+def _hulls_apart(
+    S: cython.double[:, :, ::1],
+    s: cython.Py_ssize_t,
     na: cython.Py_ssize_t,
-    HA: cython.double[:, ::1],
-    HB: cython.double[:, ::1],
-) -> cython.void:
-    """Store the pair (``HA``, ``HB``) in slot ``top`` of ``stack`` (a's rows first)."""
-    _copy_rows(HA, stack[top, :na])
-    _copy_rows(HB, stack[top, na:])
+    nb: cython.Py_ssize_t,
+    tol: cython.double,
+    P: cython.double[:, ::1],
+) -> cython.bint:
+    """True when slot ``s``'s control polygons (a: rows ``:na``, b: the next ``nb``) are over ``tol`` apart.
+
+    By the convex hull property the curves then do too. Two tests: the boxes (apart by more than
+    ``tol`` along x, y or z), then the extents along the line through the two polygons' centroids
+    (apart by more than ``tol`` times its length ``|d|``), which separates curves that pass each
+    other obliquely long before their boxes do. ``P``: na + nb + 1 rows of scratch (the Cartesian
+    points, then d).
+    """
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    lo_a: cython.double
+    hi_a: cython.double
+    lo_b: cython.double
+    hi_b: cython.double
+    m: cython.Py_ssize_t = na + nb  # row m of P: the direction d from a's centroid to b's
+    dd: cython.double = 0.0
+    for i in range(m):
+        for j in range(3):
+            P[i, j] = S[s, i, j] / S[s, i, 3]
+    for j in range(3):
+        lo_a = _INF
+        hi_a = -_INF
+        lo_b = _INF
+        hi_b = -_INF
+        P[m, j] = 0.0
+        for i in range(na):
+            lo_a = min(lo_a, P[i, j])
+            hi_a = max(hi_a, P[i, j])
+            P[m, j] -= P[i, j] / na
+        for i in range(na, m):
+            lo_b = min(lo_b, P[i, j])
+            hi_b = max(hi_b, P[i, j])
+            P[m, j] += P[i, j] / nb
+        if lo_a > hi_b + tol or lo_b > hi_a + tol:
+            return True
+        dd += P[m, j] * P[m, j]
+    if not dd > 0.0:
+        return False
+    hi_a = -_INF
+    lo_b = _INF
+    for i in range(na):
+        hi_a = max(hi_a, P[i, 0] * P[m, 0] + P[i, 1] * P[m, 1] + P[i, 2] * P[m, 2])
+    for i in range(na, m):
+        lo_b = min(lo_b, P[i, 0] * P[m, 0] + P[i, 1] * P[m, 1] + P[i, 2] * P[m, 2])
+    return lo_b - hi_a > tol * sqrt(dd)
 
 
 @cython.cfunc
 @cython.exceptval(check=False)
 def _space_separated(
-    HA: cython.double[:, ::1],
-    HB: cython.double[:, ::1],
+    HA: cython.const[cython.double][:, :],
+    HB: cython.const[cython.double][:, :],
     tol: cython.double,
     max_depth: cython.int,
     stack: cython.double[:, :, ::1],
     depth: cython.int[::1],
     work: cython.double[:, ::1],
 ) -> cython.bint:
-    """True when boxes of sub-curves (halving both, depth <= max_depth) prove a gap wider than tol.
+    """True when the hulls of sub-curves (halving both, depth <= max_depth) prove a gap wider than tol.
 
     A cheap pre-pass before the relief scheme: two space curves that stay apart need no
     projection at all (their projections may well cross). False means "not proven apart".
+    Depth first: a pair that meets reaches the depth limit after a few dozen tests.
     Scratch: ``stack`` (4 max_depth + 8, na + nb, 4), a pair of sub-curves per slot;
-    ``depth`` (4 max_depth + 8); ``work`` (2 na + 2 nb + max(na, nb) + 4 rows of 4).
+    ``depth`` (4 max_depth + 8); ``work`` (na + nb + 1 + max(na, nb) rows of at least 4).
     """
     na: cython.Py_ssize_t = HA.shape[0]
     nb: cython.Py_ssize_t = HB.shape[0]
     size: cython.Py_ssize_t = 4 * max_depth + 8
-    # the halves, de Casteljau's rows, the two boxes
-    la: cython.double[:, ::1] = work[0:na]
-    ra: cython.double[:, ::1] = work[na : 2 * na]
-    lb: cython.double[:, ::1] = work[2 * na : 2 * na + nb]
-    rb: cython.double[:, ::1] = work[2 * na + nb : 2 * na + 2 * nb]
-    o: cython.Py_ssize_t = 2 * na + 2 * nb
-    wk: cython.double[:, ::1] = work[o : o + max(na, nb)]
-    o += max(na, nb)
-    lo_a: cython.double[:] = work[o]
-    hi_a: cython.double[:] = work[o + 1]
-    lo_b: cython.double[:] = work[o + 2]
-    hi_b: cython.double[:] = work[o + 3]
-    _push(stack, 0, na, HA, HB)
-    depth[0] = 0
-    top: cython.Py_ssize_t = 1
+    pts: cython.double[:, ::1] = work[0 : na + nb + 1]
+    wk: cython.double[:, ::1] = work[na + nb + 1 :]
+    i: cython.Py_ssize_t
     j: cython.Py_ssize_t
     q: cython.Py_ssize_t
     d: cython.int
-    apart: cython.bint
+    # slot 0: both curves in local coordinates, a's first point at the origin (as _space_pair
+    # makes them), so that the boxes and the products along d are not rounded at the size of an
+    # offset far larger than the curves
+    for j in range(3):
+        pts[na + nb, j] = HA[0, j] / HA[0, 3]
+    for i in range(na):
+        for j in range(3):
+            stack[0, i, j] = (HA[i, j] / HA[i, 3] - pts[na + nb, j]) * HA[i, 3]
+        stack[0, i, 3] = HA[i, 3]
+    for i in range(nb):
+        for j in range(3):
+            stack[0, na + i, j] = (HB[i, j] / HB[i, 3] - pts[na + nb, j]) * HB[i, 3]
+        stack[0, na + i, 3] = HB[i, 3]
+    depth[0] = 0
+    top: cython.Py_ssize_t = 1
     while top > 0:
         top -= 1
         d = depth[top]
-        _space_box(stack[top, :na], lo_a, hi_a)
-        _space_box(stack[top, na:], lo_b, hi_b)
-        apart = False
-        for j in range(3):
-            if lo_a[j] > hi_b[j] + tol or lo_b[j] > hi_a[j] + tol:
-                apart = True
-        if apart:
+        if _hulls_apart(stack, top, na, nb, tol, pts):
             continue
         if d >= max_depth or top + 4 > size:
             return False
-        _space_half(stack[top, :na], la, ra, wk)
-        _space_half(stack[top, na:], lb, rb, wk)
-        _push(stack, top, na, la, lb)
-        _push(stack, top + 1, na, la, rb)
-        _push(stack, top + 2, na, ra, lb)
-        _push(stack, top + 3, na, ra, rb)
+        # slots top .. top + 3 get (a left, b left), (a left, b right), (a right, b left), (a right, b right)
+        _half_into(stack, top, 0, na, top, top + 2, wk)
+        _half_into(stack, top, na, nb, top, top + 1, wk)
+        for i in range(na):
+            for j in range(4):
+                stack[top + 1, i, j] = stack[top, i, j]
+                stack[top + 3, i, j] = stack[top + 2, i, j]
+        for i in range(na, na + nb):
+            for j in range(4):
+                stack[top + 2, i, j] = stack[top, i, j]
+                stack[top + 3, i, j] = stack[top + 1, i, j]
         for q in range(4):
             depth[top + q] = d + 1
         top += 4
@@ -815,13 +842,41 @@ def _abs_max(P: cython.double[:, ::1]) -> cython.double:
     return big
 
 
-# the scratch arrays of one call of space_pair_kernel for curves of (na, nb) control points, kept
-# for the next call of that size (allocating them cost about a microsecond); a call takes them out
+# the scratch arrays of one call of the space kernel for curves of (na, nb) control points, as this
+# module's typed views (a numpy array passed to a typed view is converted on every call), kept for
+# the next call of that size (allocating them cost about a microsecond); a call takes them out
 # while it runs, so a call made meanwhile (another thread: the planar driver runs without the GIL)
 # makes its own. At most _SPARE_SIZES sizes are kept.
 _spare: dict = {}
 _SPARE_SIZES = 32
-_SEP_DEPTH = cython.declare(cython.int, 5)  # the separation pre-pass halves both curves this often
+_SEP_DEPTH = cython.declare(cython.int, 6)  # the separation pre-pass halves both curves this often
+# the safe range of relief_cad.contacts.range_exponent: largest |w x| in [2**-101, 2**100), or 0
+_SAFE_LO = cython.declare(cython.double, math.ldexp(1.0, -SAFE_EXPONENT - 1))
+_SAFE_HI = cython.declare(cython.double, math.ldexp(1.0, SAFE_EXPONENT))
+
+
+def _views(allp: cython.double[:, ::1], ws: cython.double[:, ::1], stack: cython.double[:, :, ::1],
+           depth: cython.int[::1]):
+    """The scratch arrays as this module's own typed views (compiled; as given uncompiled)."""
+    return allp, ws, stack, depth
+
+
+@cython.cfunc
+def _run(HA0: cython.const[cython.double][:, :], HB0: cython.const[cython.double][:, :], tol: cython.double,
+         budget, k: cython.double, ends_lim: cython.double):
+    """:func:`_space_pair` in the kept scratch arrays of this size (see ``_spare``)."""
+    na: cython.Py_ssize_t = HA0.shape[0]
+    nb: cython.Py_ssize_t = HB0.shape[0]
+    bufs = _spare.pop((na, nb), None)
+    if bufs is None:
+        slots: cython.Py_ssize_t = 4 * _SEP_DEPTH + 8
+        bufs = _views(np.empty((na + nb, 3)), np.empty((2 * na + 2 * nb + 37, 4)),
+                      np.empty((slots, na + nb, 4)), np.empty(slots, dtype=np.intc))
+    try:
+        return _space_pair(HA0, HB0, tol, budget, k, ends_lim, bufs[0], bufs[1], bufs[2], bufs[3])
+    finally:
+        if len(_spare) < _SPARE_SIZES:
+            _spare[(na, nb)] = bufs
 
 
 def space_pair_kernel(
@@ -837,18 +892,48 @@ def space_pair_kernel(
     distance in model units (> 0: resolved by the caller, relief_cad.tolerances); ``budget``
     the planar clipping budget; ``k`` the span of the relief perspective. Returns ``(rows, nrows, status)``.
     """
-    na: cython.Py_ssize_t = HA0.shape[0]
-    nb: cython.Py_ssize_t = HB0.shape[0]
-    bufs = _spare.pop((na, nb), None)
-    if bufs is None:
-        slots: cython.Py_ssize_t = 4 * _SEP_DEPTH + 8
-        bufs = (np.empty((na + nb, 3)), np.empty((4 * na + 4 * nb + max(na, nb) + 41, 4)),
-                np.empty((slots, na + nb, 4)), np.empty(slots, dtype=np.intc))
-    try:
-        return _space_pair(HA0, HB0, tol, budget, k, bufs[0], bufs[1], bufs[2], bufs[3])
-    finally:
-        if len(_spare) < _SPARE_SIZES:
-            _spare[(na, nb)] = bufs
+    return _run(HA0, HB0, tol, budget, k, -1.0)
+
+
+def space_pair_rows(
+    HA0: cython.const[cython.double][:, :],
+    HB0: cython.const[cython.double][:, :],
+    tol: cython.double,
+    budget,
+    ends_lim: cython.double,
+):
+    """The rows of :func:`space_pair_kernel` (k = 2) for a pair that needs nothing else, or None.
+
+    The common case in one call. None when the pair needs the caller's general path: it is not
+    proven apart and its end points match within ``ends_lim`` per coordinate either way round
+    (curves that may coincide all along: relief_cad.contacts.whole_overlap decides first; a pair
+    proven apart cannot coincide), its coordinates lie outside the safe range (the caller scales
+    them by a power of two), or every frame showed an artefact.
+    """
+    if not _in_safe_range(HA0, HB0):
+        return None
+    rows, n, status = _run(HA0, HB0, tol, budget, 2.0, ends_lim)
+    if status != STATUS_OK:
+        return None
+    return rows[:n] if n else _NO_SPACE_ROWS
+
+
+@cython.cfunc
+@cython.exceptval(check=False)
+def _in_safe_range(
+    HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :]
+) -> cython.bint:
+    """True when relief_cad.contacts.range_exponent of the largest |w x|, |w y|, |w z| is 0."""
+    i: cython.Py_ssize_t
+    c: cython.Py_ssize_t
+    big: cython.double = 0.0
+    for i in range(HA.shape[0]):
+        for c in range(3):
+            big = max(big, abs(HA[i, c]))
+    for i in range(HB.shape[0]):
+        for c in range(3):
+            big = max(big, abs(HB[i, c]))
+    return big == 0.0 or _SAFE_LO <= big < _SAFE_HI
 
 
 @cython.cfunc
@@ -858,6 +943,7 @@ def _space_pair(
     tol: cython.double,
     budget,
     k: cython.double,
+    ends_lim: cython.double,
     allp: cython.double[:, ::1],
     ws: cython.double[:, ::1],
     stack: cython.double[:, :, ::1],
@@ -865,9 +951,9 @@ def _space_pair(
 ):
     """:func:`space_pair_kernel` in the given scratch arrays (their contents are overwritten).
 
-    ``allp`` (na + nb, 3): the local Cartesian points; ``ws`` (4 na + 4 nb + max(na, nb) + 41, 4):
-    the curves, de Casteljau's rows, the frame and the work of the pre-pass; ``stack`` and ``depth``
-    the pre-pass's slots (:func:`_space_separated`).
+    ``allp`` (na + nb, 3): the local Cartesian points; ``ws`` (2 na + 2 nb + 37, 4):
+    the work of the pre-pass, then the curves, de Casteljau's rows and the frame; ``stack`` and
+    ``depth`` the pre-pass's slots (:func:`_space_separated`).
 
     Not one screen: the frames, the planar driver's rows and their classification in space share
     the scratch views and counters.
@@ -882,6 +968,9 @@ def _space_pair(
     ckind: cython.int
     na: cython.Py_ssize_t = HA0.shape[0]
     nb: cython.Py_ssize_t = HB0.shape[0]
+    # most pairs whose boxes overlap stay apart: proven first, before any other work
+    if _space_separated(HA0, HB0, tol, _SEP_DEPTH, stack, depth, ws):
+        return _NO_SPACE_ROWS, 0, STATUS_OK
     # allp holds the local Cartesian points of a (rows :na) and of b (rows na:)
     PA: cython.double[:, ::1] = allp[:na]
     PB: cython.double[:, ::1] = allp[na:]
@@ -891,9 +980,11 @@ def _space_pair(
     for i in range(nb):
         for j in range(3):
             PB[i, j] = HB0[i, j] / HB0[i, 3]
+    if ends_lim >= 0.0 and _ends_match(PA, PB, ends_lim):
+        return _NO_SPACE_ROWS, 0, STATUS_ENDS_MATCH
     big0: cython.double = max(_abs_max(PA), _abs_max(PB))
-    # one scratch array of 4 columns for the whole call, cut into blocks of rows: the local
-    # curves, de Casteljau's rows, the frame, 3-vectors, the frame's work, the pre-pass's work
+    # one scratch array of 4 columns for the rest of the call, cut into blocks of rows: the local
+    # curves, de Casteljau's rows, the frame, 3-vectors, the frame's work
     HA: cython.double[:, ::1] = ws[0:na]
     HB: cython.double[:, ::1] = ws[na : na + nb]
     o: cython.Py_ssize_t = na + nb
@@ -904,7 +995,6 @@ def _space_pair(
     ref: cython.double[:] = ws[o + 4, 0:3]
     vec: cython.double[:, ::1] = ws[o + 5 : o + 21]
     fw: cython.double[:, ::1] = ws[o + 21 : o + 37]
-    sep_work: cython.double[:, ::1] = ws[o + 37 :]
     for j in range(3):
         ref[j] = PA[0, j]
     # local coordinates: an exact shift for nearby values (Sterbenz), parameters unchanged
@@ -920,8 +1010,6 @@ def _space_pair(
         HB[i, 3] = HB0[i, 3]
     big: cython.double = _abs_max(allp)
     meet: cython.double = max(1e3 * _C_EPS * big, 16.0 * _C_EPS * big0, 1e-3 * tol)
-    if _space_separated(HA, HB, tol, _SEP_DEPTH, stack, depth, sep_work):
-        return _NO_SPACE_ROWS, 0, STATUS_OK
     out = np.empty((8, SPACE_COLS))
     ov: cython.double[:, ::1] = out
     # points and derivatives on the curves (rows of vec), then the planar images, which the planar

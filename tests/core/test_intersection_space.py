@@ -14,7 +14,7 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from relief_cad import RationalBezier, preimage_of_lift
+from relief_cad import RationalBezier, intersect, preimage_of_lift
 from relief_cad.errors import InputTypeError, ReliefCadError, ToleranceError
 from relief_cad.results import Intersection, Overlap
 from relief_cad.space import intersect_space, relief_scheme
@@ -228,6 +228,25 @@ def test_overlaps_in_space(case: tuple) -> None:  # type: ignore[type-arg]
     assert len(overlaps) == 1 and len(res) == 1, res
     ov = overlaps[0]
     assert ov.t == pytest.approx(t, abs=1e-12) and ov.u == pytest.approx(u, abs=1e-12)
+
+
+@pytest.mark.parametrize("entry", ["intersect", "intersect_space"])
+@pytest.mark.parametrize("other", ["same", "elevated", "reversed", "reweighted"])
+def test_closed_space_curve_on_itself_is_one_overlap(entry: str, other: str) -> None:
+    """A closed space loop against a copy of itself: one overlap, through either entry point.
+
+    The clipping alone sees the loop's shared end point as crossings and its coinciding images as
+    a string of tangent contacts; the end points matching must send the pair to the geometric
+    test of coincidence first (the kernel's gate, then whole_overlap): no clipping, so a budget of
+    one iteration is enough.
+    """
+    loop = RationalBezier([[0, 0, 0], [2, 2, 1], [-2, 2, -1], [0, 0, 0]])
+    b = {"same": loop, "elevated": loop.elevate(1), "reversed": loop.reversed(),
+         "reweighted": RationalBezier(loop.control_points, [1.0, 2.0, 0.5, 1.0]).elevate(1)}[other]
+    a = loop if other != "reweighted" else RationalBezier(loop.control_points, [1.0, 2.0, 0.5, 1.0])
+    res = (intersect if entry == "intersect" else intersect_space)(a, b, budget=1)
+    u = (1.0, 0.0) if other == "reversed" else (0.0, 1.0)
+    assert list(res) == [Overlap(t=(0.0, 1.0), u=u)], res
 
 
 def test_coplanar_pair_in_a_tilted_plane() -> None:
