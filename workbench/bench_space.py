@@ -147,9 +147,11 @@ def run(min_seconds: float = 0.3) -> dict[str, Any]:
     Returns
     -------
     dict
-        ``{"rows": [{case, pairs, relief_us, edge_edge_us, extrema_us, ratio, found}], ...}`` where
-        ``ratio`` is relief_cad's time over the faster OCCT route's, and ``found`` the number of
-        results of each side (relief_cad, IntTools_EdgeEdge common parts, extrema within tol).
+        ``{"rows": [{case, pairs, relief_us, edge_edge_us, extrema_us, ratio, ratio_edge_edge,
+        found}], ...}`` where ``ratio`` is relief_cad's time over the faster OCCT route's,
+        ``ratio_edge_edge`` over ``IntTools_EdgeEdge``'s (what OCCT's Boolean operations use; the
+        issue's target of 0.05 is set on it), and ``found`` the number of results of each side
+        (relief_cad, IntTools_EdgeEdge common parts, extrema within tol).
     """
     rows = []
     for name, pairs in cases().items():
@@ -173,26 +175,29 @@ def run(min_seconds: float = 0.3) -> dict[str, Any]:
             "edge_edge_us": t_ee,
             "extrema_us": t_ex,
             "ratio": t_ours / min(t_ee, t_ex),
+            "ratio_edge_edge": t_ours / t_ee,
             "found": {"relief_cad": ours(), "IntTools_EdgeEdge": edge_edge(), "extrema<=tol": extrema()},
         })
     return {"benchmark": "space", "unit": "microseconds per pair", "rows": rows,
-            "worst_ratio": max(r["ratio"] for r in rows), "target_ratio": 0.05}
+            "worst_ratio": max(r["ratio"] for r in rows),
+            "worst_ratio_edge_edge": max(r["ratio_edge_edge"] for r in rows), "target_ratio": 0.05}
 
 
 def format_table(result: dict[str, Any]) -> str:
     """The benchmark result as a plain-text table."""
     lines = [
         f"{'case':32s} {'pairs':>5s} {'relief_cad':>11s} {'EdgeEdge':>10s} {'Extrema':>10s} "
-        f"{'ratio':>7s}  found (relief / EdgeEdge / Extrema)"
+        f"{'ratio':>7s} {'vs EE':>7s}  found (relief / EdgeEdge / Extrema)"
     ]
     for r in result["rows"]:
         f = r["found"]
         lines.append(
             f"{r['case']:32s} {r['pairs']:5d} {r['relief_us']:9.1f}us {r['edge_edge_us']:8.1f}us "
-            f"{r['extrema_us']:8.1f}us {r['ratio']:7.3f}  "
+            f"{r['extrema_us']:8.1f}us {r['ratio']:7.3f} {r['ratio_edge_edge']:7.3f}  "
             f"{f['relief_cad']} / {f['IntTools_EdgeEdge']} / {f['extrema<=tol']}"
         )
-    lines.append(f"ratio = relief_cad / faster OCCT route; worst {result['worst_ratio']:.3f}, "
+    lines.append(f"ratio = relief_cad / faster OCCT route; worst {result['worst_ratio']:.3f}; "
+                 f"vs EE = relief_cad / IntTools_EdgeEdge; worst {result['worst_ratio_edge_edge']:.3f}; "
                  f"target <= {result['target_ratio']}")
     return "\n".join(lines)
 
