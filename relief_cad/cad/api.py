@@ -738,7 +738,8 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
             crossings.append(1 if r.kind == "crossing" else 0)
         elif r.kind == "crossing" and points[k].kind == "crossing" and not _same_place(points[k], r, tol):
             crossings[k] += 1  # another crossing within tol of this one (not a copy from a segment joint)
-    points, crossings = _join_stretches(points, crossings, tol)
+    if len(points) > 1:
+        points, crossings = _join_stretches(points, crossings, tol)
     # an even number of crossings within tol of each other is a touch: b crosses a and back
     return merged + [_Raw(p.ea, p.eb, p.t, p.u, p.point, "tangent", p.distance) if n % 2 == 0 and n else p
                      for p, n in zip(points, crossings, strict=True)]
