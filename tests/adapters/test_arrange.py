@@ -198,6 +198,25 @@ def test_touch_hiding_two_crossings_gets_a_vertex_covering_them(depth):
     assert sorted(area(f) for f in faces) == pytest.approx(sorted([math.pi * 0.04, math.pi * 0.96]), rel=1e-9)
 
 
+@pytest.mark.parametrize("scale", [0.01, 1.0, 100.0])
+def test_exactly_tangent_circles_meet_at_one_vertex(scale):
+    """Circles of radius ``scale`` and ``scale / 2`` touching inside at one point: each circle is cut
+    there once, into 4 pieces in all, with 2 valid faces. At scale 100 the rounded spans cross
+    twice 1e-6 apart, farther than tol: that was 2 vertices and a sliver edge of 1e-6 between them."""
+    big = bd.Edge.make_circle(scale).moved(bd.Location((0, 0, 0), (0, 0, 1), 37.0))
+    small = bd.Edge.make_circle(0.5 * scale).moved(bd.Location((0.5 * scale, 0, 0), (0, 0, 1), 30.0))
+    pieces = arrange([big, small])
+    assert len(pieces) == 4
+    assert_connected(pieces, tol=1e-7)
+    touch = [v for p in pieces for v in ends(p)
+             if math.dist(BRep_Tool.Pnt_s(v).Coord(), (scale, 0, 0)) <= 1e-6 * scale]
+    assert len(touch) == 4 and all(touch[0].IsSame(v) for v in touch)  # both circles' cut ends
+    faces = arrange([big, small], faces=True)
+    assert len(faces) == 2 and all(BRepCheck_Analyzer(raw(f)).IsValid() for f in faces)
+    assert sorted(area(f) for f in faces) == pytest.approx(
+        sorted([math.pi * 0.25 * scale**2, math.pi * 0.75 * scale**2]), rel=1e-9)
+
+
 def test_self_intersection_of_one_edge_is_cut():
     eight = bd.Edge.make_spline([(0, 0), (1, 1), (2, 0), (1, -1), (0, 0.0001)][:4] + [(0, -0.5)])
     loop = bd.Edge.make_spline([(0, 0), (2, 1), (2, -1), (0, 1)])  # crosses itself once
