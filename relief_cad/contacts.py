@@ -436,13 +436,18 @@ def refine_self(c: RationalBezier, items: Sequence[Result], tol: float) -> list[
     ovs = [r for r in items if isinstance(r, Overlap)]
     chained = (len(pts) >= 2 and any(p.kind == "tangent" for p in pts)) or (ovs and pts)
     if not (chained or ovs):
-        return list(items)
+        return _by_t(list(items))
     cands = (_chains(c, c, pts, ovs, tol, ends=False) if chained else []) + ovs
     # o.t == o.u: the curve against itself, not a retraced stretch
     found = [(_to_fold(c, o, tol), True) for o in cands if o.t != o.u]
     merged = _drop_nested(self_overlaps(found))
     res: list[Result] = [p for p in pts if not _covered(p, merged)]
     res += merged
+    return _by_t(res)
+
+
+def _by_t(res: list[Result]) -> list[Result]:
+    """``res`` sorted by ``t`` (an overlap by its first ``t``; stable), in place."""
     res.sort(key=lambda r: r.t[0] if isinstance(r, Overlap) else r.t)
     return res
 
