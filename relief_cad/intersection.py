@@ -421,7 +421,9 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     -------
     IntersectionList
         Results with ``t`` on the curve and ``u`` the line parameter ``s``
-        (any real number), sorted by ``t``.
+        (any real number), sorted by ``t``: :class:`Intersection` points, and an
+        :class:`Overlap` for a stretch of the curve lying on the line (within
+        ``tol``), with ``u`` the line's parameters at its ends.
 
     Raises
     ------
@@ -438,6 +440,8 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     >>> c = RationalBezier([[0, 0], [1, 2], [2, 0]])
     >>> [(r.t, r.u) for r in intersect_line(c, (0, 0.75), (1, 0))]
     [(0.25, 0.5), (0.75, 1.5)]
+    >>> intersect_line(RationalBezier([[1, 0], [3, 0]]), (0, 0), (2, 0))
+    [Overlap(t=(0.0, 1.0), u=(0.5, 1.5), kind='overlap')]
     """
     check_curve(curve, "curve")
     if curve.dim != 2:
@@ -476,6 +480,9 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
             pt = curve.evaluate(r.t) if r.kind == "crossing" else r.point
             su = float((np.asarray(pt) - p) @ d / dd)
             items.append(Intersection(r.t, su, r.point, r.kind, r.distance))
+        else:  # a stretch of the curve along the line: u is the line's parameter at its ends
+            u0, u1 = (float((curve.evaluate(t) - p) @ d / dd) for t in r.t)
+            items.append(Overlap(t=r.t, u=(u0, u1)))
     return finish(IntersectionList(items, res.unresolved, ftol), on_budget)
 
 

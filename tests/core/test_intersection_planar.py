@@ -185,6 +185,14 @@ def test_curves_without_double_points(pts: list[list[float]]) -> None:
     assert intersect(RationalBezier(pts)) == []
 
 
+def test_self_intersections_are_sorted_by_t_with_the_closing_point() -> None:
+    """A closed quartic crossing itself once inside and at its closing point: the results come
+    sorted by t, the closing point (t = 0, u = 1) first (it came last)."""
+    res = intersect(RationalBezier([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [0.0, -1.0], [0.0, 0.0]]))
+    assert [(r.t, r.u) for r in res][0] == (0.0, 1.0) and len(res) == 2
+    assert [r.t for r in res] == sorted(r.t for r in res)
+
+
 # ----------------------------------------------------------------------------- lines
 
 
@@ -203,6 +211,31 @@ def test_intersect_line_high_degree_graph(n: int) -> None:
     r = intersect_line(RationalBezier(np.column_stack([xs, ys])), (0.0, c), (1.0, 0.0), tol=1e-12)
     assert len(r) == 1
     assert abs(r[0].t - c ** (1.0 / n)) <= 1e-13
+
+
+@pytest.mark.parametrize(("pts", "point", "direction", "t", "u"), [
+    ([[1.0, 0.0], [3.0, 0.0]], (0.0, 0.0), (2.0, 0.0), (0.0, 1.0), (0.5, 1.5)),
+    ([[0.0, 1.0], [1.0, 1.0], [4.0, 1.0]], (5.0, 1.0), (-2.0, 0.0), (0.0, 1.0), (2.5, 0.5)),
+    ([[0.0, 0.0], [1.0, 2.0], [2.0, 4.0], [3.0, 3.0]], (1.0, 2.0), (1.0, 2.0), None, None),
+])
+def test_intersect_line_gives_the_stretch_on_the_line_as_an_overlap(pts, point, direction, t, u) -> None:
+    """A curve lying on the line is one Overlap with the line's parameters at its ends (it was an
+    empty list: overlaps were dropped); a curve leaving the line keeps only its points."""
+    res = intersect_line(RationalBezier(pts), point, direction)
+    if t is None:
+        assert res.overlaps == [] and len(res.points) >= 1
+        return
+    assert list(res) == [Overlap(t=t, u=u)]
+
+
+def test_intersect_line_on_a_curve_shorter_than_the_rounding_floor_is_not_lost() -> None:
+    """A segment 1e-12 long at y = 20 (rounding floor 2.8e-13) crossed steeply at its middle lies
+    within tol of the line all along: one Overlap over the whole curve (it was an empty list)."""
+    c = RationalBezier([[0.0, 20.0], [0.0, 20.0 + 1e-12]])
+    d = np.array([math.cos(1.0), math.sin(1.0)])
+    res = intersect_line(c, (0.0, 20.0 + 5e-13), d)
+    assert [type(r).__name__ for r in res] == ["Overlap"] and res[0].t == (0.0, 1.0)
+    assert min(res[0].u) < 0.0 < max(res[0].u)  # the line's point (u = 0) is on the stretch
 
 
 def test_intersect_line_rejects_bad_input() -> None:
