@@ -249,6 +249,18 @@ def _closest_u(ca: ExactCurve, cb: ExactCurve, t: Any, u0: Any) -> tuple[Any, An
     return u, mp.sqrt(sum((pa[k] - pb[k]) ** 2 for k in range(3)))
 
 
+def _one_place(found: list[PointCheck], ca: ExactCurve) -> bool:
+    """True when the contacts ``found`` are one contact: within 1e-3 of ``a``'s range of each other.
+
+    The library's rule (``relief_cad.contacts``): contacts bounding a stretch along which the curves
+    stay within tol are one overlap, unless they are within 1e-3 in parameter. A tangent that a
+    tolerance stretched into a segment has one deep minimum there; a curve and a copy of it rounded
+    by 1e-9 meet at several places far apart, and between them stay within tol: an overlap.
+    """
+    ts = [f.t for f in found]
+    return max(ts) - min(ts) <= 1e-3 * max(1.0, abs(ca.last - ca.first))
+
+
 def arbitrate_overlap(
     a: Any,
     b: Any,
@@ -267,8 +279,9 @@ def arbitrate_overlap(
     rounding level of the data (``1e-3 tol`` or ``1e-13`` of the curves' size, the
     larger), and otherwise ``"within_tolerance"`` unless the distance has an isolated
     minimum far below the rest (a tangent contact that a tolerance stretched into a
-    segment: the verdict is then ``"tangent"``). A claim that fails is resolved into the
-    true isolated points in the range.
+    segment: the verdict is then ``"tangent"``; deep minima farther apart than 1e-3 of
+    ``a``'s range are contacts bounding a stretch within tol, an overlap). A claim that
+    fails is resolved into the true isolated points in the range.
 
     Parameters
     ----------
@@ -332,7 +345,8 @@ def arbitrate_overlap(
                     found.append(check)
         if dmax <= tol:
             dmin = min(f.distance for f in found) if found else float(min(dists))
-            if found and dmin * 10 < dmax and (dmin <= rounding or dmin * 1e3 < tol):
+            deep = dmin * 10 < dmax and (dmin <= rounding or dmin * 1e3 < tol)
+            if found and deep and _one_place(found, ca):
                 return OverlapCheck("tangent", dmax, tuple(found))
             return OverlapCheck("within_tolerance", dmax)
         if not found:

@@ -154,3 +154,18 @@ def test_overlap_range_disputes():
     too_long = EdgeOverlap(0, 0, None, None, (0.5, 3.0), (-0.5, 2.0), None)
     (d,) = compare(a, b, relief=[too_long]).disagreements
     assert d.verdict.winner == "occt" and d.claimant == "relief_cad" and d.verdict.distance == pytest.approx(0.5)
+
+
+def test_curves_within_tol_between_contacts_far_apart_are_an_overlap_not_a_tangent():
+    # b is the line a bent by 1e-9: y(t) = 3e-9 t(1-t)(1-2t), zero at t = 0, 1/2, 1 (exact contacts
+    # far apart) and within 2.9e-10 of a all along: contacts bounding a stretch within tol, one overlap
+    a = bezier([(0, 0, 0), (1, 0, 0), (3, 0, 0), (4, 0, 0)])
+    b = bezier([(0, 0, 0), (1, 1e-9, 0), (3, -1e-9, 0), (4, 0, 0)])
+    chk = arbitrate_overlap(a, b, (0.0, 1.0), (0.0, 1.0), tol=1e-7)
+    assert chk.holds and chk.status == "within_tolerance"
+    assert chk.max_distance == pytest.approx(3e-9 / (6 * math.sqrt(3)), rel=1e-6)
+    # a shorter claim loses to the whole range; it used to be "neither" (both called a tangent)
+    c = compare(a, b, relief=[EdgeOverlap(0, 0, None, None, (0.0, 0.5), (0.0, 0.5), None)])
+    (d,) = c.disagreements
+    assert d.verdict.winner == "occt" and d.verdict.truth == "overlap"
+    assert "relief_cad reports only part of it" in d.verdict.reason
