@@ -36,6 +36,7 @@ i.e. at most ``1e-3`` of the diagonal of their joint bounding box; otherwise
 
 from __future__ import annotations
 
+import bisect
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -751,15 +752,20 @@ def _join_stretches(points: list[_Raw], crossings: list[int],
 
     Tangent circles of radius 100 cross twice 1e-6 apart where their rational spans are rounded,
     farther apart than tol (1e-7) though the circles stay within 1e-14 between the two: the
-    rounding of one tangent meeting. Consecutive crossings (by ``t``) are joined when
-    :func:`_stretch_within` says so; a chain of them keeps its point nearest to the other edge.
+    rounding of one tangent meeting. Consecutive crossings (by ``t``) are joined when they are
+    within 1e-3 of a span in both parameters (:func:`_near_params`, the core's rule for one
+    contact) and :func:`_stretch_within` says so; a chain of them keeps its point nearest to the
+    other edge. Farther apart they are distinct contacts, however close the edges stay between
+    them: a crossing 0.007 of a span before a touch, the quartics within 7e-8 between them, is a
+    crossing and a touch, not one crossing.
     """
     order = sorted((k for k, n in enumerate(crossings) if n), key=lambda k: points[k].t)
     if len(order) < 2:
         return points, crossings
     chains: list[list[int]] = [[order[0]]]
     for k in order[1:]:
-        if _stretch_within(points[chains[-1][-1]], points[k], tol):
+        last = points[chains[-1][-1]]
+        if _near_params(last, points[k]) and _stretch_within(last, points[k], tol):
             chains[-1].append(k)
         else:
             chains.append([k])
@@ -773,6 +779,22 @@ def _join_stretches(points: list[_Raw], crossings: list[int],
             if k != best:
                 del count[k]
     return [points[k] for k in count], list(count.values())
+
+
+def _near_params(p: _Raw, q: _Raw) -> bool:
+    """True when contacts ``p`` and ``q`` of one edge pair are within 1e-3 of a span in both parameters.
+
+    The span is that of the rational piece holding ``p`` on each edge (the core's parameter
+    on a piece runs over [0, 1], and its rule for one contact is 1e-3 there).
+    """
+    dt, du = abs(float(q.t) - float(p.t)), abs(float(q.u) - float(p.u))
+    return dt <= 1e-3 * _span_at(p.ea, p.t) and du <= 1e-3 * _span_at(p.eb, p.u)
+
+
+def _span_at(e: _EdgeInfo, t: float) -> float:
+    """The parameter length of the piece of edge ``e`` that holds ``t`` (the last one at its end)."""
+    k = max(0, bisect.bisect_right([s.t0 for s in e.segs], t) - 1)
+    return e.segs[k].t1 - e.segs[k].t0
 
 
 def _stretch_within(p: _Raw, q: _Raw, tol: float) -> bool:

@@ -695,3 +695,25 @@ def test_two_crossings_within_tol_of_each_other_are_one_touch(scale: float, cent
     found = [r for r in api.intersections(a, b) if isinstance(r, EdgeIntersection)]
     assert [r.kind for r in found] == ["tangent"], found
     assert math.dist(found[0].point, (scale, 0.0, 0.0)) <= 1e-6 * scale
+
+
+def test_a_crossing_near_a_touch_stays_a_crossing_and_a_touch() -> None:
+    """Quartics (workbench corpus, tangent family, seed 31) crossing at t 0.3014 and touching at 0.3081.
+
+    The rounded touch is two crossings 3e-7 apart: one contact. The quartics stay within 7e-8
+    (< tol 1e-7) from the crossing to the touch, 0.007 in parameter: farther than the 1e-3 within
+    which contacts are one, so the crossing is its own contact (all three were joined into one
+    'crossing', losing the touch; OCCT and the arbiter give the crossing and the touch).
+    """
+    a = BRepBuilderAPI_MakeEdge(Geom_BezierCurve(_poles([
+        (0.18348910061215962, 0.82776756826476705), (0.78446703563155074, 0.9960598706652527),
+        (0.026102035511390009, 0.76644510444985459), (0.071563082008245238, 0.83484135846277874),
+        (0.20302951845847006, 0.44019535528065901)]))).Edge()
+    b = BRepBuilderAPI_MakeEdge(Geom_BezierCurve(_poles([
+        (0.19588657605912047, 0.79285253497977326), (0.7684224331510574, 1.0412463146350404),
+        (0.035069984449493941, 0.7411886530850903), (0.11348462781258772, 0.71677763061923516),
+        (-0.033367446455493832, 1.1059605696385408)]))).Edge()
+    found = api.intersections(a, b)
+    assert [(r.kind, round(r.t, 4)) for r in found] == [("crossing", 0.3014), ("tangent", 0.3081)], found
+    c = compare(a, b)
+    assert c.errors == {} and c.disagreements == [] and len(c.agreed) == 2
