@@ -635,13 +635,9 @@ def _match_side(
             for k, claim in enumerate(mine):
                 if k in used_m:
                     continue
+                counter: tuple[EdgeResult, ...]
                 if isinstance(claim, EdgeOverlap):
-                    counter: tuple[EdgeResult, ...] = tuple(
-                        x
-                        for x in theirs
-                        if isinstance(x, EdgeIntersection) and _in_range(x.t, claim.t, pad_a)
-                    )
-                    verdict = _judge_overlap(ca, cb, claim, counter, tol, side, other)
+                    counter, verdict = _judge_overlap(ca, cb, claim, theirs, pad_a, tol, side, other)
                 else:
                     counter = tuple(
                         x for x in theirs if isinstance(x, EdgeOverlap) and _in_range(claim.t, x.t, pad_a)
@@ -775,14 +771,23 @@ def _judge_overlap(
     ca: ExactCurve,
     cb: ExactCurve,
     claim: EdgeOverlap,
-    counter: tuple[EdgeResult, ...],
+    theirs: Sequence[EdgeResult],
+    pad: float,
     tol: float,
     side: str,
     other: str,
-) -> Verdict:
+) -> tuple[tuple[EdgeResult, ...], Verdict]:
+    """Judge an overlap claim that ``other`` did not match: ``other``'s evidence and the verdict.
+
+    The evidence is ``other``'s points within the claimed range (``pad`` of slack in ``t``) and, when
+    the claim fails, those at its true points: the true point of a range that only grazes a
+    tangency (OCCT gives one contact as two abutting overlaps) may lie just outside it.
+    """
+    counter: tuple[EdgeResult, ...] = tuple(
+        x for x in theirs if isinstance(x, EdgeIntersection) and _in_range(x.t, claim.t, pad))
     chk = arbitrate_overlap(ca, cb, claim.t, claim.u, tol=tol)
     if chk.holds:
-        return Verdict(
+        return counter, Verdict(
             side,
             "overlap",
             f"the curves {'coincide' if chk.status == 'coincident' else 'stay within tol'} over the "
@@ -791,11 +796,19 @@ def _judge_overlap(
             chk.max_distance,
         )
     truth_pts = chk.points
-    matched = len(counter) == len(truth_pts) and all(
-        any(_pt_dist(c.point, p.point) <= max(tol, math.sqrt(tol * ca.size) * 10) for p in truth_pts)
-        for c in counter
-        if isinstance(c, EdgeIntersection)
-    )
+    reach = max(tol, math.sqrt(tol * ca.size) * 10)
+
+    def at_truth(c: EdgeResult) -> bool:
+        return isinstance(c, EdgeIntersection) and any(_pt_dist(c.point, p.point) <= reach for p in truth_pts)
+
+    counter += tuple(x for x in theirs if all(x is not c for c in counter) and at_truth(x))
+    matched = len(counter) == len(truth_pts) and all(at_truth(c) for c in counter)
+    return counter, _overlap_failed(chk, counter, matched, other)
+
+
+def _overlap_failed(chk: OverlapCheck, counter: tuple[EdgeResult, ...], matched: bool, other: str) -> Verdict:
+    """The verdict on an overlap claim that does not hold: ``other`` wins when it gave the true points."""
+    truth_pts = chk.points
     if chk.status == "tangent":
         what = f"a tangent point, not an overlap (distance rises to {chk.max_distance:.3g} along the range)"
     elif chk.status == "none":

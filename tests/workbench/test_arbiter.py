@@ -169,3 +169,22 @@ def test_curves_within_tol_between_contacts_far_apart_are_an_overlap_not_a_tange
     (d,) = c.disagreements
     assert d.verdict.winner == "occt" and d.verdict.truth == "overlap"
     assert "relief_cad reports only part of it" in d.verdict.reason
+
+
+def test_an_overlap_claim_that_grazes_a_tangency_is_judged_by_the_point_next_to_it():
+    # quartics touching at t = 0.3109 (workbench corpus, tangent family, seed 7). OCCT 8.0 gives
+    # two abutting overlaps, the second [0.31102, 0.31111] just past the touch: its true point is
+    # relief_cad's tangent, outside the range, and was not counted ("neither"; relief reported 0)
+    a = bezier([(0.49234364558071231, 0.13510236483080262, 0), (0.87904736917965187, 0.40479694390438958, 0),
+                (0.96745411377969259, 0.30705591442428648, 0), (0.16489342765480997, 0.81090155544163756, 0),
+                (0.78950347124370224, 0.90062110700309239, 0)])
+    b = bezier([(0.93678694011338015, 0.062907238363036355, 0), (0.65533172426695829, 0.44113719130146811, 0),
+                (0.54053288038288605, 0.37640476683360491, 0), (1.4613094194954854, 0.60031244849113807, 0),
+                (0.89721325331714785, 0.88312478872297395, 0)])
+    c = compare(a, b)
+    assert c.errors == {}
+    assert [(r.kind, round(r.t, 4)) for r in c.relief] == [("tangent", 0.3109)]
+    for d in c.disagreements:  # each of OCCT's overlaps (if any) is the touch relief_cad gave
+        assert d.claimant == "occt" and d.verdict.winner == "relief_cad" and d.verdict.truth == "tangent"
+        assert [x.t for x in d.counter] == [c.relief[0].t]
+    assert len(c.disagreements) == sum(isinstance(r, EdgeOverlap) for r in c.occt)
