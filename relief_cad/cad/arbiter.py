@@ -249,16 +249,29 @@ def _closest_u(ca: ExactCurve, cb: ExactCurve, t: Any, u0: Any) -> tuple[Any, An
     return u, mp.sqrt(sum((pa[k] - pb[k]) ** 2 for k in range(3)))
 
 
-def _one_place(found: list[PointCheck], ca: ExactCurve) -> bool:
-    """True when the contacts ``found`` are one contact: within 1e-3 of ``a``'s range of each other.
+def _one_place(ts: list[float], ca: ExactCurve) -> bool:
+    """True when contacts at ``a``'s parameters ``ts`` are one contact: within 1e-3 of its range.
 
     The library's rule (``relief_cad.contacts``): contacts bounding a stretch along which the curves
     stay within tol are one overlap, unless they are within 1e-3 in parameter. A tangent that a
     tolerance stretched into a segment has one deep minimum there; a curve and a copy of it rounded
     by 1e-9 meet at several places far apart, and between them stay within tol: an overlap.
     """
-    ts = [f.t for f in found]
     return max(ts) - min(ts) <= 1e-3 * max(1.0, abs(ca.last - ca.first))
+
+
+def _end_contacts(ca: ExactCurve, cb: ExactCurve, ts: list[Any], us: list[Any]) -> list[float]:
+    """The ends of a sampled range (``a`` at ``ts``, closest ``b`` at ``us``) where either curve ends.
+
+    Within tol of the other curve, the end of a curve is a contact (an end meeting); a copy of a
+    curve rounded by 1e-9 whose one end meets the other exactly has a single deep minimum there, yet
+    its other end bounds the stretch within tol with it.
+    """
+    def at_end(x: Any, c: ExactCurve) -> bool:
+        slack = 1e-9 * max(1.0, abs(c.last - c.first))
+        return bool(abs(x - c.first) <= slack or abs(x - c.last) <= slack)
+
+    return [float(ts[i]) for i in (0, len(ts) - 1) if at_end(ts[i], ca) or at_end(us[i], cb)]
 
 
 def arbitrate_overlap(
@@ -346,7 +359,7 @@ def arbitrate_overlap(
         if dmax <= tol:
             dmin = min(f.distance for f in found) if found else float(min(dists))
             deep = dmin * 10 < dmax and (dmin <= rounding or dmin * 1e3 < tol)
-            if found and deep and _one_place(found, ca):
+            if found and deep and _one_place([f.t for f in found] + _end_contacts(ca, cb, ts, us), ca):
                 return OverlapCheck("tangent", dmax, tuple(found))
             return OverlapCheck("within_tolerance", dmax)
         if not found:

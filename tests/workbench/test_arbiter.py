@@ -188,3 +188,17 @@ def test_an_overlap_claim_that_grazes_a_tangency_is_judged_by_the_point_next_to_
         assert d.claimant == "occt" and d.verdict.winner == "relief_cad" and d.verdict.truth == "tangent"
         assert [x.t for x in d.counter] == [c.relief[0].t]
     assert len(c.disagreements) == sum(isinstance(r, EdgeOverlap) for r in c.occt)
+
+
+def test_a_curve_end_within_tol_bounds_an_overlap_with_a_deep_minimum_at_the_other_end():
+    # b runs along a (the x axis) from its start, rising to 1e-9 at its own end: y = 1e-9 s^2 (3 - 2s).
+    # One deep minimum (the exact start), yet b's end, within tol of a, is a contact too: the two
+    # bound a stretch within tol, an overlap (it was called a stretched tangent, OCCT's lone point right)
+    a = bezier([(0, 0, 0), (1, 0, 0), (3, 0, 0), (4, 0, 0)])
+    b = bezier([(0, 0, 0), (2 / 3, 0, 0), (4 / 3, 1e-9, 0), (2, 1e-9, 0)])
+    chk = arbitrate_overlap(a, b, (0.0, 0.5), (0.0, 1.0), tol=1e-7)
+    assert chk.holds and chk.status == "within_tolerance" and chk.max_distance == pytest.approx(1e-9)
+    c = compare(a, b)
+    assert [(type(r), r.t, r.u) for r in c.relief] == [(EdgeOverlap, (0.0, 0.5), (0.0, 1.0))]
+    for d in c.disagreements:
+        assert d.verdict.winner == "relief_cad" and d.verdict.truth == "overlap"
