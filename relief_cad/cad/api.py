@@ -740,24 +740,24 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
         elif r.kind == "crossing" and points[k].kind == "crossing" and not _same_place(points[k], r, tol):
             crossings[k] += 1  # another crossing within tol of this one (not a copy from a segment joint)
     if len(points) > 1:
-        points, crossings = _join_stretches(points, crossings, tol)
+        points, crossings = _join_stretches(points, crossings)
     # an even number of crossings within tol of each other is a touch: b crosses a and back
     return merged + [_Raw(p.ea, p.eb, p.t, p.u, p.point, "tangent", p.distance) if n % 2 == 0 and n else p
                      for p, n in zip(points, crossings, strict=True)]
 
 
-def _join_stretches(points: list[_Raw], crossings: list[int],
-                    tol: float) -> tuple[list[_Raw], list[int]]:
-    """Crossings the edges join by a stretch within ``tol`` are one contact, with all their crossings.
+def _join_stretches(points: list[_Raw], crossings: list[int]) -> tuple[list[_Raw], list[int]]:
+    """Crossings the edges join by a stretch within rounding are one contact, with all their crossings.
 
     Tangent circles of radius 100 cross twice 1e-6 apart where their rational spans are rounded,
-    farther apart than tol (1e-7) though the circles stay within 1e-14 between the two: the
+    farther apart than tol (1e-7), though the circles stay within 1e-14 between the two: the
     rounding of one tangent meeting. Consecutive crossings (by ``t``) are joined when they are
     within 1e-3 of a span in both parameters (:func:`_near_params`, the core's rule for one
-    contact) and :func:`_stretch_within` says so; a chain of them keeps its point nearest to the
-    other edge. Farther apart they are distinct contacts, however close the edges stay between
-    them: a crossing 0.007 of a span before a touch, the quartics within 7e-8 between them, is a
-    crossing and a touch, not one crossing.
+    contact) and the edges stay within the rounding floor of their control points between them
+    (:func:`_stretch_within`); a chain keeps its point nearest to the other edge. A wider gap is
+    the data's own: a curve crossing another twice 8e-4 apart, 7e-8 from it between (a near-miss
+    within tol 1e-7), crosses it twice, as the exact arbiter says; so does a crossing 0.007 before
+    a touch.
     """
     order = sorted((k for k, n in enumerate(crossings) if n), key=lambda k: points[k].t)
     if len(order) < 2:
@@ -765,7 +765,7 @@ def _join_stretches(points: list[_Raw], crossings: list[int],
     chains: list[list[int]] = [[order[0]]]
     for k in order[1:]:
         last = points[chains[-1][-1]]
-        if _near_params(last, points[k]) and _stretch_within(last, points[k], tol):
+        if _near_params(last, points[k]) and _stretch_within(last, points[k], _pair_floor(last)):
             chains[-1].append(k)
         else:
             chains.append([k])
@@ -795,6 +795,11 @@ def _span_at(e: _EdgeInfo, t: float) -> float:
     """The parameter length of the piece of edge ``e`` that holds ``t`` (the last one at its end)."""
     k = max(0, bisect.bisect_right([s.t0 for s in e.segs], t) - 1)
     return e.segs[k].t1 - e.segs[k].t0
+
+
+def _pair_floor(p: _Raw) -> float:
+    """The rounding floor of the control points of both edges of contact ``p`` (from their boxes)."""
+    return rounding_floor(np.array([p.ea.lo, p.ea.hi, p.eb.lo, p.eb.hi]))
 
 
 def _stretch_within(p: _Raw, q: _Raw, tol: float) -> bool:
