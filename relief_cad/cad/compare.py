@@ -670,6 +670,28 @@ def _coincide_around(ca: ExactCurve, cb: ExactCurve, check: PointCheck, tol: flo
         return near > 0
 
 
+def _same_touch(ca: ExactCurve, cb: ExactCurve, check: PointCheck, m: EdgeIntersection, tol: float) -> bool:
+    """True when the tangent root ``check`` and the point ``m`` are one touch rounded into two roots.
+
+    They are within 1e-3 of ``a``'s range and, at 7 points of ``a`` between them, the curves stay
+    within the rounding level of the data (``1e-3 tol`` or ``1e-13`` of their size, as
+    :func:`arbitrate_overlap` takes it): a touch whose data were rounded crosses and crosses back
+    (roots 1e-7 apart in parameter, 1e-14 between), one contact at any tolerance.
+    """
+    import mpmath
+
+    if abs(m.t - check.t) > 1e-3 * max(1.0, abs(ca.last - ca.first)):
+        return False
+    rounding = max(1e-3 * tol, 1e-13 * max(ca.size, cb.size))
+    with mpmath.workdps(ARBITER_DIGITS):
+        t0, t1, u0, u1 = (ca.mp.mpf(x) for x in (check.t, m.t, check.u, m.u))
+        for q in range(1, 8):
+            _, d = _closest_u(ca, cb, t0 + (t1 - t0) * q / 8, u0 + (u1 - u0) * q / 8)
+            if d > rounding:
+                return False
+    return True
+
+
 def _judge_ranges(
     ca: ExactCurve, cb: ExactCurve, rel: EdgeOverlap, occ: EdgeOverlap, tol: float
 ) -> Disagreement:
@@ -746,6 +768,15 @@ def _judge_point(
                 "duplicate",
                 f"{side} reports a second, misplaced copy of a {check.kind} point both found "
                 f"(it refines onto {other}'s point)",
+                check.distance,
+                check.exact,
+            )
+        if isinstance(m, EdgeIntersection) and check.kind == "tangent" and _same_touch(ca, cb, check, m, tol):
+            return Verdict(
+                other,
+                "duplicate",
+                f"{side} reports a touch twice: its two roots, where rounding makes the curves cross "
+                f"and cross back, are joined by a stretch within rounding ({other} gave one)",
                 check.distance,
                 check.exact,
             )

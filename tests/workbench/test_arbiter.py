@@ -202,3 +202,24 @@ def test_a_curve_end_within_tol_bounds_an_overlap_with_a_deep_minimum_at_the_oth
     assert [(type(r), r.t, r.u) for r in c.relief] == [(EdgeOverlap, (0.0, 0.5), (0.0, 1.0))]
     for d in c.disagreements:
         assert d.verdict.winner == "relief_cad" and d.verdict.truth == "overlap"
+
+
+def test_a_touch_that_rounding_splits_into_two_roots_reported_twice_is_a_duplicate():
+    # a cubic touching a line at t = 0.33108 (workbench corpus, tangent family, seed 404): the rounded
+    # data cross and cross back, roots 1.2e-7 apart in t, within 3e-15 between. OCCT 8.0 reports a
+    # tangent at each root; relief_cad one touch. The second was "a true tangent relief_cad missed"
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+    from OCP.Geom import Geom_Line
+    from OCP.gp import gp_Dir, gp_Pnt
+
+    a = bezier([(0.91149182588910782, 0.02033025307713876, 0), (0.5913114170261291, 0.34121420376938483, 0),
+                (0.22055242313872903, 0.83639064213267955, 0), (0.56268450019998062, 0.26589926052201396, 0)])
+    line = Geom_Line(gp_Pnt(0.76794851001290509, 0.16956884654155924, 0),
+                     gp_Dir(-0.66848007903914863, 0.74373004775107321, 0))
+    b = BRepBuilderAPI_MakeEdge(line, 0.0, 0.488872816552504).Edge()
+    c = compare(a, b)
+    assert c.errors == {}
+    assert [(r.kind, round(r.t, 5)) for r in c.relief] == [("crossing", 0.24441), ("tangent", 0.33108)]
+    assert len(c.agreed) == 2
+    for d in c.disagreements:
+        assert d.claimant == "occt" and d.verdict.winner == "relief_cad" and d.verdict.truth == "duplicate"
