@@ -337,17 +337,27 @@ def _route_edgeedge(da: _EdgeData, db: _EdgeData, tol: float) -> list[_Raw] | No
             kind = "tangent" if _tangent_sine(da, t, db, u) < _TANGENT_SINE else "crossing"
             out.append(("point", t, u, mid, kind, pa.Distance(pb)))
         elif cp.Type() == TopAbs_EDGE:
-            r1 = cp.Range1()
-            t0, t1 = float(r1.First()), float(r1.Last())
+            t0, t1 = _bounds(cp.Range1())
             ranges2 = cp.Ranges2()
             for j in range(1, ranges2.Length() + 1):
                 r2 = ranges2.Value(j)
                 u0 = _project_param(db, da.curve.Value(t0))
                 u1 = _project_param(db, da.curve.Value(t1))
-                lo, hi = sorted((float(r2.First()), float(r2.Last())))
+                lo, hi = sorted(_bounds(r2))
                 u0, u1 = min(max(u0, lo), hi), min(max(u1, lo), hi)
                 out.append(("overlap", (t0, t1), (u0, u1)))
     return out
+
+
+def _bounds(r: Any) -> tuple[float, float]:
+    """``(first, last)`` of an ``IntTools_Range``, or of the tuple OCP gives for one.
+
+    ``IntTools_CommonPrt.Range1`` has two overloads in OCP 7.9 and 8.0, and the one taken returns
+    a ``(first, last)`` tuple; the elements of ``Ranges2`` are ``IntTools_Range`` objects.
+    """
+    if isinstance(r, tuple):
+        return float(r[0]), float(r[1])
+    return float(r.First()), float(r.Last())
 
 
 def _route_section(da: _EdgeData, db: _EdgeData, tol: float) -> list[_Raw]:

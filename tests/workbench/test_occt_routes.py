@@ -87,6 +87,18 @@ def test_partial_overlap_is_a_segment_with_matching_ranges():
     assert ov.reversed_direction
 
 
+def test_a_space_overlap_through_inttools_is_a_segment():
+    # a twisted cubic and its piece on [1/4, 3/4], reversed (blossoms at dyadic parameters: exact);
+    # the common part's range came as a tuple, which the route read as an IntTools_Range and failed
+    a = bezier([(0, 0, 0), (1, 2, 1), (3, 2, 0), (4, 0, 2)])
+    b = bezier([(3.09375, 1.125, 0.984375), (2.40625, 1.625, 0.578125), (1.59375, 1.625, 0.609375),
+                (0.90625, 1.125, 0.453125)])
+    (ov,) = occt_intersections(a, b)
+    assert isinstance(ov, EdgeOverlap) and ov.route == "IntTools_EdgeEdge"
+    assert ov.t == pytest.approx((0.25, 0.75), abs=1e-6) and ov.u == pytest.approx((1.0, 0.0), abs=1e-6)
+    assert ov.reversed_direction
+
+
 def test_self_intersection_of_a_looping_cubic_and_of_a_wire():
     loop = bezier([(0, 0, 0), (4, 3, 0), (-1, 3, 0), (3, 0, 0)])
     (hit,) = occt_intersections(loop)
