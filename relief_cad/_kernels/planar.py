@@ -88,6 +88,59 @@ def _two_roots(pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssiz
 
 @cython.cfunc
 @cython.nogil
+@cython.exceptval(check=False)
+def _drop_near_roots(HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :],
+                     roots: cython.double[:, :], nroots: cython.Py_ssize_t, gap: cython.double,
+                     wa: cython.double[:, :], wb: cython.double[:, :]) -> cython.Py_ssize_t:
+    """Drop the uncertified roots (column 2 not 1) that a certified one explains; the new count.
+
+    One is explained when it lies between two certified roots in ``t`` (the near-roots of triple
+    crossings at an inflection), or when the curves at the middle of it and a certified root are
+    within ``gap`` (rounding): the same root found again. Others stay: a touch (a double root,
+    never certified) 0.004 from a crossing in one wide cluster is a contact of its own.
+    """
+    k: cython.Py_ssize_t
+    c: cython.Py_ssize_t
+    k2: cython.Py_ssize_t = 0
+    keep: cython.bint
+    lo: cython.double = _INF
+    hi: cython.double = -_INF
+    for c in range(nroots):
+        if roots[c, 2] == 1.0:
+            lo = min(lo, roots[c, 0])
+            hi = max(hi, roots[c, 0])
+    for k in range(nroots):
+        keep = roots[k, 2] == 1.0 or not (lo <= hi)
+        if not keep and not (lo < roots[k, 0] < hi):
+            keep = True
+            for c in range(nroots):
+                if roots[c, 2] == 1.0 and _mid_gap(HA, HB, roots[k, 0], roots[k, 1], roots[c, 0], roots[c, 1],
+                                                   wa, wb) <= gap:
+                    keep = False
+                    break
+        if keep:
+            roots[k2, 0] = roots[k, 0]
+            roots[k2, 1] = roots[k, 1]
+            roots[k2, 2] = roots[k, 2]
+            k2 += 1
+    return k2
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _mid_gap(HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :], t0: cython.double,
+             u0: cython.double, t1: cython.double, u1: cython.double, wa: cython.double[:, :],
+             wb: cython.double[:, :]) -> cython.double:
+    """Distance from ``a`` at the middle of ``t0, t1`` to ``b`` near the middle of ``u0, u1``."""
+    x: cython.double
+    y: cython.double
+    x, y, _a, _b, _c, _d = _eval(HA, 0.5 * (t0 + t1), wa)
+    return _local_dist(HB, x, y, 0.5 * (u0 + u1), wb)
+
+
+@cython.cfunc
+@cython.nogil
 def _room(a: cython.double[:, :], n: cython.Py_ssize_t) -> cython.double[:, :]:
     """``a`` itself when it has at least ``n`` rows, else a larger copy (:func:`._grow`, with the GIL).
 
@@ -257,6 +310,9 @@ def _pair_core(
     perp: cython.bint
     wide: cython.bint
     distinct: cython.bint
+    padt: cython.double
+    padu: cython.double
+    nunc: cython.Py_ssize_t
     if _apart(PA, PB, tol):  # disjoint bounding boxes (widened by tol): nothing to do
         return nres
     # the curves in the frame and all scratch arrays are blocks of rows of ``scratch`` (one
@@ -604,12 +660,12 @@ def _pair_core(
         label[i] = li
 
     # points found: (t, u, dist, kind, priority)
-    b5: cython.double[:, :]  # pts, then roots (3 columns)
+    b5: cython.double[:, :]  # pts (column 5: 1.0 for a certified root), then roots (3 columns)
     if ncand <= _NSMALL:
-        b5 = scratch[r5 : r5 + 8 + ncand + ncand + 4, 0:5]
+        b5 = scratch[r5 : r5 + 8 + ncand + ncand + 4, 0:6]
     else:
         with cython.gil:
-            b5 = np.empty((8 + ncand + ncand + 4, 5))
+            b5 = np.empty((8 + ncand + ncand + 4, 6))
     pts: cython.double[:, :] = b5[0 : 8 + ncand]
     npts = 0
     for k in range(nend):
@@ -620,6 +676,7 @@ def _pair_core(
         pts[npts, 2] = ends[k, 2]
         pts[npts, 3] = -1.0  # kind decided below
         pts[npts, 4] = 2.0  # end points win merges
+        pts[npts, 5] = 0.0
         npts += 1
     roots: cython.double[:, :] = b5[8 + ncand : 8 + ncand + ncand + 4, 0:3]
     da: cython.double[:, :] = scratch[r6 : r6 + ma, 0:6]
@@ -674,8 +731,15 @@ def _pair_core(
                 seeds[ks + 1, 0] = ct0 + f * (ct1 - ct0)
                 seeds[ks + 1, 1] = cu1 - f * (cu1 - cu0)
                 ks += 2
+        # a root belongs to the cluster within a box width of its box: Newton from a diagonal seed
+        # of a wide tangent cluster ran 0.09 away to a crossing, whose certificate then dropped the
+        # cluster's own uncertified touch (the other cluster finds that crossing itself)
+        padt = max(1e-6, ct1 - ct0)
+        padu = max(1e-6, cu1 - cu0)
         for q in range(ks):
             t, u, r = _newton(HA, HB, seeds[q, 0], seeds[q, 1], wa, wb, 60)
+            if t < ct0 - padt or t > ct1 + padt or u < cu0 - padu or u > cu1 + padu:
+                continue
             if r < bestres:
                 bestres = r
                 bt = t
@@ -726,22 +790,15 @@ def _pair_core(
                 pts[npts, 2] = d
                 pts[npts, 3] = k_tangent
                 pts[npts, 4] = 0.0
+                pts[npts, 5] = 0.0
                 npts += 1
             continue
-        # certified roots explain the cluster: drop uncertified near-roots between them
-        ncert = 0
+        # certified roots explain the cluster: drop the uncertified near-roots that are theirs
+        nroots = _drop_near_roots(HA, HB, roots, nroots, 4.0 * rnd, wa, wb)
+        nunc = 0
         for k in range(nroots):
-            if roots[k, 2] == 1.0:
-                ncert += 1
-        if 0 < ncert < nroots:
-            k2 = 0
-            for k in range(nroots):
-                if roots[k, 2] == 1.0:
-                    roots[k2, 0] = roots[k, 0]
-                    roots[k2, 1] = roots[k, 1]
-                    roots[k2, 2] = roots[k, 2]
-                    k2 += 1
-            nroots = k2
+            if roots[k, 2] != 1.0:
+                nunc += 1
         # sort roots by t (insertion sort)
         for i in range(1, nroots):
             j = i
@@ -790,7 +847,7 @@ def _pair_core(
                     # a certified (simple) root crosses, however small the angle
                     if sn < 1e-12:
                         kind = k_tangent
-                elif nroots == 1 and sn < 1e-7:
+                elif nunc == 1 and sn < 1e-7:  # the cluster's one uncertified root: a touch
                     kind = k_tangent
                 elif sn < 1e-10:
                     kind = k_tangent
@@ -801,6 +858,7 @@ def _pair_core(
                 pts[npts, 2] = 0.0
                 pts[npts, 3] = kind
                 pts[npts, 4] = 1.0
+                pts[npts, 5] = roots[i, 2]
                 npts += 1
             else:
                 t, u, d = _closest(
@@ -813,6 +871,7 @@ def _pair_core(
                 pts[npts, 2] = d
                 pts[npts, 3] = k_tangent
                 pts[npts, 4] = 1.0
+                pts[npts, 5] = 0.0
                 npts += 1
             i = j + 1
 
@@ -834,7 +893,11 @@ def _pair_core(
             noise = False  # a crossing root merged into an end contact away from it
             dt = abs(pts[i, 0] - pts[j, 0])
             du = abs(pts[i, 1] - pts[j, 1])
-            if dt <= 1e-9 and du <= 1e-9:
+            if pts[i, 5] == 1.0 and pts[j, 5] == 1.0 and (dt > 1e-13 or du > 1e-13):
+                # certified roots found distinct (a touch that rounding split into two crossings
+                # 8e-10 apart): two roots however close, as the clusters decided
+                same = False
+            elif dt <= 1e-9 and du <= 1e-9:
                 same = True
             elif dt <= 1e-9 or du <= 1e-9:
                 # one parameter shared: the same point only if the curve is point-like between
