@@ -605,7 +605,8 @@ def _match_side(
             used_r.add(i)
             used_o.add(j)
         # 2b. loose matches (tangents are located to ~sqrt(tol), some answers are inaccurate):
-        # the arbiter refines every unmatched point; two that refine to one true point match.
+        # the arbiter refines every unmatched point; two that refine to one true point match, and
+        # so do two tangent roots of one touch that rounding split (_one_touch)
         loose = []
         for d, i, j in cand:
             if i in used_r or j in used_o:
@@ -614,7 +615,7 @@ def _match_side(
             assert isinstance(r, EdgeIntersection) and isinstance(o, EdgeIntersection)
             pr, po = ref("r", i, r), ref("o", j, o)
             dd = _pt_dist(pr.point, po.point)
-            if pr.holds and po.holds and dd <= tol:
+            if pr.holds and po.holds and (dd <= tol or _one_touch(ca, cb, pr, po, tol)):
                 loose.append((dd, d, i, j))
         for _dd, d, i, j in sorted(loose):
             if i in used_r or j in used_o:
@@ -670,7 +671,8 @@ def _coincide_around(ca: ExactCurve, cb: ExactCurve, check: PointCheck, tol: flo
         return near > 0
 
 
-def _same_touch(ca: ExactCurve, cb: ExactCurve, check: PointCheck, m: EdgeIntersection, tol: float) -> bool:
+def _one_touch(ca: ExactCurve, cb: ExactCurve, check: PointCheck, m: PointCheck | EdgeIntersection,
+               tol: float) -> bool:
     """True when the tangent root ``check`` and the point ``m`` are one touch rounded into two roots.
 
     They are within 1e-3 of ``a``'s range and, at 7 points of ``a`` between them, the curves stay
@@ -680,7 +682,7 @@ def _same_touch(ca: ExactCurve, cb: ExactCurve, check: PointCheck, m: EdgeInters
     """
     import mpmath
 
-    if abs(m.t - check.t) > 1e-3 * max(1.0, abs(ca.last - ca.first)):
+    if check.kind != "tangent" or abs(m.t - check.t) > 1e-3 * max(1.0, abs(ca.last - ca.first)):
         return False
     rounding = max(1e-3 * tol, 1e-13 * max(ca.size, cb.size))
     with mpmath.workdps(ARBITER_DIGITS):
@@ -771,7 +773,7 @@ def _judge_point(
                 check.distance,
                 check.exact,
             )
-        if isinstance(m, EdgeIntersection) and check.kind == "tangent" and _same_touch(ca, cb, check, m, tol):
+        if isinstance(m, EdgeIntersection) and _one_touch(ca, cb, check, m, tol):
             return Verdict(
                 other,
                 "duplicate",

@@ -223,3 +223,20 @@ def test_a_touch_that_rounding_splits_into_two_roots_reported_twice_is_a_duplica
     assert len(c.agreed) == 2
     for d in c.disagreements:
         assert d.claimant == "occt" and d.verdict.winner == "relief_cad" and d.verdict.truth == "duplicate"
+
+
+def test_one_touch_located_apart_by_both_sides_is_a_loose_match():
+    # space quadratics touching at t = u = 0.44747 (a curve and its mirror image): relief_cad and
+    # OCCT 8.0 place the touch 1.2e-7 apart in t, 2.4e-7 apart in space (> tol), and the arbiter
+    # refines each onto its own root of the rounded touch; it is one touch, joined within rounding
+    a = bezier([(0.668718141104379, 0.16919201197466172, 0.9752731285769425),
+                (0.575521730097716, 0.12014173834123776, 0.02361851222314959),
+                (0.6012062097735446, 0.04214951474078499, 0.052442927803092454)])
+    b = bezier([(0.6743116482552771, 0.1714235901761665, 0.974567161946254),
+                (0.5686148217430698, 0.11738616733574704, 0.024490245589722733),
+                (0.6097349166711159, 0.045552116344072066, 0.05136650431597117)])
+    c = compare(a, b)
+    assert c.errors == {} and [(r.kind, round(r.t, 5)) for r in c.relief] == [("tangent", 0.44747)]
+    assert all(d.verdict.winner == "relief_cad" for d in c.disagreements)
+    if [r.kind for r in c.occt] == ["tangent"]:  # OCCT's one touch is relief_cad's
+        assert len(c.agreed) == 1 and c.disagreements == []
