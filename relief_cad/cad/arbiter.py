@@ -249,6 +249,11 @@ def _closest_u(ca: ExactCurve, cb: ExactCurve, t: Any, u0: Any) -> tuple[Any, An
     return u, mp.sqrt(sum((pa[k] - pb[k]) ** 2 for k in range(3)))
 
 
+def _rounding(ca: ExactCurve, cb: ExactCurve, tol: float) -> float:
+    """The rounding level of the data: ``1e-3 tol`` or ``1e-13`` of the curves' size, the larger."""
+    return max(1e-3 * tol, 1e-13 * max(ca.size, cb.size))
+
+
 def _one_place(ts: list[float], ca: ExactCurve) -> bool:
     """True when contacts at ``a``'s parameters ``ts`` are one contact: within 1e-3 of its range.
 
@@ -338,7 +343,7 @@ def arbitrate_overlap(
             us.append(ui)
             dists.append(di)
         dmax = float(max(dists))
-        rounding = max(1e-3 * tol, 1e-13 * max(ca.size, cb.size))
+        rounding = _rounding(ca, cb, tol)
         if dmax <= rounding:
             return OverlapCheck("coincident", dmax)
         # isolated minima in the range

@@ -35,6 +35,8 @@ from .arbiter import (
     OverlapCheck,
     PointCheck,
     _closest_u,
+    _one_place,
+    _rounding,
     arbitrate_overlap,
     arbitrate_point,
 )
@@ -657,7 +659,7 @@ def _coincide_around(ca: ExactCurve, cb: ExactCurve, check: PointCheck, tol: flo
 
     with mpmath.workdps(ARBITER_DIGITS):
         mp = ca.mp
-        rounding = max(1e-3 * tol, 1e-13 * max(ca.size, cb.size))
+        rounding = _rounding(ca, cb, tol)
         delta = mp.mpf(ca.last - ca.first) * mp.mpf("1e-3")
         near = 0
         for sgn in (-1, 1):
@@ -682,9 +684,9 @@ def _one_touch(ca: ExactCurve, cb: ExactCurve, check: PointCheck, m: PointCheck 
     """
     import mpmath
 
-    if check.kind != "tangent" or abs(m.t - check.t) > 1e-3 * max(1.0, abs(ca.last - ca.first)):
+    if check.kind != "tangent" or not _one_place([check.t, m.t], ca):
         return False
-    rounding = max(1e-3 * tol, 1e-13 * max(ca.size, cb.size))
+    rounding = _rounding(ca, cb, tol)
     with mpmath.workdps(ARBITER_DIGITS):
         t0, t1, u0, u1 = (ca.mp.mpf(x) for x in (check.t, m.t, check.u, m.u))
         for q in range(1, 8):
