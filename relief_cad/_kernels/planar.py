@@ -70,20 +70,82 @@ def _in_overlap(
 @cython.nogil
 @cython.exceptval(check=False)
 def _two_roots(pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssize_t, rnd: cython.double,
+               gap: cython.double, floor: cython.double, k_tangent: cython.double,
                k_crossing: cython.double) -> cython.bint:
-    """True when points ``i`` and ``j`` are an exact end meeting and a crossing root: two roots.
+    """True when points ``i`` and ``j`` are a contact (an end meeting, a touch) and a crossing root: two.
 
-    Within 1e-3 in parameter, with the curves within tol all along between them, an end contact
-    and a root are otherwise one contact. But an end meeting closer than rounding (``<= rnd``) is
-    itself a root, and a transversal root more than 1e-4 away in both parameters is another (the
-    rounding noise of a tangent end meeting stays far closer): the crossing of a loop thinner than
-    tol next to the end (a self-intersection's pieces meeting near a cusp) was lost in the end
-    contact.
+    Within 1e-3 in parameter, with the curves within tol all along between them (at most ``gap``
+    apart), such a contact and a root are otherwise one contact. But the root is another contact
+    when between them the curves part by more than the data's rounding (``floor``) and 4 times the
+    contact's own distance: a spline through a circle's point that crosses it again 1e-4 of a span
+    away, 1e-10 off it between; a curve crossing its mirror image 7e-4 before it touches it. The
+    rounding noise of a touch parts by no more than the touch's own distance. An end meeting closer
+    than rounding (``<= rnd``) is also another root than a crossing more than 1e-4 away in both
+    parameters (the crossing of a loop thinner than tol next to the end: a self-intersection's
+    pieces meeting near a cusp).
     """
-    e: cython.Py_ssize_t = i if pts[i, 4] == 2.0 else j
+    e: cython.Py_ssize_t = i if pts[i, 4] == 2.0 or pts[i, 3] == k_tangent else j
     r: cython.Py_ssize_t = j if e == i else i
-    apart: cython.bint = abs(pts[i, 0] - pts[j, 0]) > 1e-4 and abs(pts[i, 1] - pts[j, 1]) > 1e-4
-    return apart and pts[e, 4] == 2.0 and pts[e, 2] <= rnd and pts[r, 4] == 1.0 and pts[r, 3] == k_crossing
+    if not ((pts[e, 4] == 2.0 or pts[e, 3] == k_tangent) and pts[r, 4] == 1.0 and pts[r, 3] == k_crossing):
+        return False
+    if (pts[e, 4] == 2.0 and pts[e, 2] <= rnd and abs(pts[i, 0] - pts[j, 0]) > 1e-4
+            and abs(pts[i, 1] - pts[j, 1]) > 1e-4):
+        return True
+    return gap > max(4.0 * pts[e, 2], floor)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _gap_between(HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :],
+                 pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssize_t,
+                 wa: cython.double[:, :], wb: cython.double[:, :]) -> cython.double:
+    """The largest distance from ``a`` to ``b`` at 7 points evenly spaced in (t, u) from ``i`` to ``j``."""
+    q: cython.Py_ssize_t
+    gap: cython.double = 0.0
+    for q in range(1, 8):
+        f = q / 8.0
+        x, y, _a, _b, _c, _d = _eval(HA, pts[i, 0] + f * (pts[j, 0] - pts[i, 0]), wa)
+        gap = max(gap, _local_dist(HB, x, y, pts[i, 1] + f * (pts[j, 1] - pts[i, 1]), wb))
+    return gap
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _point_like(HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :],
+                pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssize_t, tl: cython.double,
+                wa: cython.double[:, :], wb: cython.double[:, :]) -> cython.bint:
+    """True when each curve stays within ``tl`` of its point ``i`` up to its point ``j`` (5 samples)."""
+    q: cython.Py_ssize_t
+    x0, y0, _a, _b, _c, _d = _eval(HA, pts[i, 0], wa)
+    x1, y1, _a, _b, _c, _d = _eval(HB, pts[i, 1], wb)
+    for q in range(5):
+        f = q / 4.0
+        x, y, _a, _b, _c, _d = _eval(HA, pts[i, 0] + f * (pts[j, 0] - pts[i, 0]), wa)
+        x2, y2, _a, _b, _c, _d = _eval(HB, pts[i, 1] + f * (pts[j, 1] - pts[i, 1]), wb)
+        if hypot(x - x0, y - y0) > tl or hypot(x2 - x1, y2 - y1) > tl:
+            return False
+    return True
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _data_floor(PA: cython.const[cython.double][:, :], PB: cython.const[cython.double][:, :],
+                scale: cython.double, rnd: cython.double) -> cython.double:
+    """The rounding level of the control points in the frame: ``rnd`` times their largest coordinate.
+
+    The frame's unit is ``1 / scale`` model units; ``rnd`` (64 eps) of the largest coordinate is
+    :func:`relief_cad.tolerances.rounding_floor` of both curves, and never below ``rnd``.
+    """
+    i: cython.Py_ssize_t
+    big: cython.double = 0.0
+    for i in range(PA.shape[0]):
+        big = max(big, abs(PA[i, 0]), abs(PA[i, 1]))
+    for i in range(PB.shape[0]):
+        big = max(big, abs(PB[i, 0]), abs(PB[i, 1]))
+    return rnd * max(1.0, big * scale)
 
 
 @cython.cfunc
@@ -312,6 +374,8 @@ def _pair_core(
     distinct: cython.bint
     padt: cython.double
     padu: cython.double
+    gap: cython.double
+    same: cython.bint
     nunc: cython.Py_ssize_t
     if _apart(PA, PB, tol):  # disjoint bounding boxes (widened by tol): nothing to do
         return nres
@@ -899,42 +963,26 @@ def _pair_core(
                 same = False
             elif dt <= 1e-9 and du <= 1e-9:
                 same = True
-            elif dt <= 1e-9 or du <= 1e-9:
-                # one parameter shared: the same point only if the curve is point-like between
-                same = True
-                x0, y0, _a, _b, _c, _d = _eval(HA, pts[i, 0], wa)
-                x1, y1, _a, _b, _c, _d = _eval(HB, pts[i, 1], wb)
-                for q in range(5):
-                    f = q / 4.0
-                    x, y, _a, _b, _c, _d = _eval(HA, pts[i, 0] + f * (pts[j, 0] - pts[i, 0]), wa)
-                    x2, y2, _a, _b, _c, _d = _eval(HB, pts[i, 1] + f * (pts[j, 1] - pts[i, 1]), wb)
-                    if hypot(x - x0, y - y0) > tl or hypot(x2 - x1, y2 - y1) > tl:
-                        same = False
-                        break
-            elif (
-                dt <= 1e-3
-                and du <= 1e-3
-                and (
-                    pts[i, 3] == k_tangent
-                    or pts[j, 3] == k_tangent
-                    or pts[i, 4] == 2.0
-                    or pts[j, 4] == 2.0
-                )
-                and not _two_roots(pts, i, j, rnd, k_crossing)
-            ):
-                # one contact if the curves stay within tol all along between them
-                same = True
-                noise = True
-                for q in range(1, 8):
-                    f = q / 8.0
-                    tm = pts[i, 0] + f * (pts[j, 0] - pts[i, 0])
-                    um = pts[i, 1] + f * (pts[j, 1] - pts[i, 1])
-                    x, y, _a, _b, _c, _d = _eval(HA, tm, wa)
-                    if _local_dist(HB, x, y, um, wb) > tl:
-                        same = False
-                        break
             else:
-                same = False
+                # one parameter shared: the same point if the curves are point-like between
+                same = (dt <= 1e-9 or du <= 1e-9) and _point_like(HA, HB, pts, i, j, tl, wa, wb)
+                if not same and (
+                    dt <= 1e-3
+                    and du <= 1e-3
+                    and (
+                        pts[i, 3] == k_tangent
+                        or pts[j, 3] == k_tangent
+                        or pts[i, 4] == 2.0
+                        or pts[j, 4] == 2.0
+                    )
+                ):
+                    # else one contact if the curves stay within tol all along between them (a
+                    # touch's tangent root 1e-9 from the end where it touches, 3e-7 apart on an
+                    # ellipse of size 240)
+                    gap = _gap_between(HA, HB, pts, i, j, wa, wb)
+                    same = gap <= tl and not _two_roots(pts, i, j, rnd, gap, _data_floor(PA, PB, scale, rnd),
+                                                        k_tangent, k_crossing)
+                    noise = True
             if same:
                 # the kept point takes the other's kind if it has none, but a crossing root near an
                 # end contact is the rounding noise of a tangent meeting there (see _two_roots): the

@@ -7,6 +7,7 @@ Truth: closed forms where they exist; otherwise OCCT's own answer on the same ed
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import build123d as bd
 import numpy as np
@@ -738,3 +739,82 @@ def test_a_near_miss_within_tol_that_crosses_twice_gives_both_crossings() -> Non
         ("crossing", 0.6183), ("crossing", 0.6862), ("crossing", 0.687)], found
     c = compare(a, b)
     assert c.errors == {} and all(d.verdict.winner == "relief_cad" for d in c.disagreements)
+
+
+def _circle_and_spline_through_it(radius: float, bend: float, half: float, at: float) -> tuple[Any, Any]:
+    """An arc of a circle (140 degrees about angle ``at``, in degrees) and a spline through its middle.
+
+    The spline interpolates 7 points ``p + x t + (bend x^2 / 2 + bend^2 x^3 / 20) n`` (``x`` from
+    ``-half`` to ``half``; ``p`` the arc's middle, ``t`` and ``n`` its tangent and normal there):
+    its middle knot is ``p``, the arc's joint of two rational pieces. Its tangent there is not quite
+    the circle's, so it crosses the circle at ``p`` and again close by.
+    """
+    th = math.radians(at)
+    arc = bd.Edge.make_circle(radius, bd.Plane.XY, start_angle=at - 70, end_angle=at + 70)
+    n = (math.cos(th), math.sin(th))
+    t = (-n[1], n[0])
+    p = (radius * n[0], radius * n[1])
+    pts = []
+    for x in [half * (i / 3 - 1) for i in range(7)]:
+        y = 0.5 * bend * x * x + 0.05 * bend * bend * x**3
+        pts.append(bd.Vector(p[0] + x * t[0] + y * n[0], p[1] + x * t[1] + y * n[1]))
+    return arc, bd.Edge.make_spline(pts)
+
+
+@pytest.mark.parametrize(("radius", "bend", "half", "at"), [
+    (100.0, 0.004, 60.0, 90.0), (100.0, 0.004, 60.0, 37.0), (50.0, -0.005, 30.0, 200.0),
+    (10.0, 0.05, 8.0, 90.0), (1.0, 0.3, 0.9, 10.0)])
+def test_a_spline_crossing_a_circle_at_a_joint_and_again_close_by_gives_both_crossings(
+        radius: float, bend: float, half: float, at: float) -> None:
+    """The second crossing lies 1e-5 to 4e-5 of a piece away, the curves 1e-8 to 1e-11 apart between.
+
+    The core took it for the rounding noise of the end meeting (within 1e-3 of a span and tol between
+    them, unless 1e-4 apart in both parameters) and gave one crossing at any tolerance above the
+    gap; OCCT and the exact arbiter give two. The edges part by far more than rounding between
+    them: two contacts, at every tolerance.
+    """
+    arc, spline = _circle_and_spline_through_it(radius, bend, half, at)
+    for tol in (1e-9, 1e-7, 1e-6):
+        found = api.intersections(arc, spline, tol=tol)
+        assert [r.kind for r in found] == ["crossing", "crossing"], (tol, found)
+        assert 1e-6 < abs(found[1].t - found[0].t) < 1e-3 * (math.radians(70)), found
+    c = compare(arc, spline)
+    assert c.errors == {} and c.score()["occt_right"] == 0 and c.score()["neither"] == 0, c.disagreements
+
+
+def test_a_circle_touching_an_ellipse_at_its_seam_is_one_touch() -> None:
+    """An ellipse (size 320) and a circle touching it at its vertex, the seam (workbench fuzz).
+
+    A rounded tangent root 1.2e-9 from the seam, 3e-7 away in space (> tol 1e-7), was kept next to the
+    touch found at the end of the ellipse's piece: the curves are within tol all along between them,
+    the rounding of one touch. It was reported twice; OCCT and the arbiter give one.
+    """
+    ra, rb, r2 = 321.6676685573217, 242.05423548918796, 148.10085373781246
+    loc = bd.Location((2.8089138997659675, 9.775806030868567, 0), (0, 0, 1), 170.96184403929013)
+    ellipse = bd.Edge.make_ellipse(ra, rb, bd.Plane.XY).moved(loc)
+    circle = bd.Edge.make_circle(r2).moved(bd.Location((ra + r2, 0, 0))).moved(loc)
+    found = api.intersections(ellipse, circle)
+    assert [(r.kind, r.t) for r in found] == [("tangent", 0.0)], found
+    c = compare(ellipse, circle)
+    assert c.errors == {} and c.score()["occt_right"] == 0 and c.score()["neither"] == 0, c.disagreements
+
+
+def test_a_curve_crossing_its_mirror_image_just_before_touching_it_gives_both() -> None:
+    """Quartics (workbench corpus, tangent family, seed 6060): a curve and its mirror image in a plane
+    tangent to it at t 0.69139 cross at 0.69071, 7e-4 before: within 1e-3, and within tol between.
+
+    The touch was merged into the crossing; the curves part by far more than rounding between the
+    two, so they are two contacts, as OCCT and the exact arbiter say.
+    """
+    a = BRepBuilderAPI_MakeEdge(Geom_BezierCurve(_poles([
+        (0.22132417463217868, 0.94089899147737466), (0.82240931814185425, 0.48459761761653741),
+        (0.64108822854342173, 0.24671568029724278), (0.17360103145910455, 0.54284616173057065),
+        (0.37484967714882089, 0.32195014919176868)]))).Edge()
+    b = BRepBuilderAPI_MakeEdge(Geom_BezierCurve(_poles([
+        (0.23714527487369813, -0.12526962798777785), (0.82442643356508549, 0.34866616321334698),
+        (0.63612677511714422, 0.58106322056204118), (0.17763216614067445, 0.27119190047707481),
+        (0.37223779914345645, 0.49796207786174346)]))).Edge()
+    found = api.intersections(a, b)
+    assert [(r.kind, round(r.t, 5)) for r in found] == [("crossing", 0.69071), ("tangent", 0.69139)], found
+    c = compare(a, b)
+    assert c.errors == {} and c.disagreements == [] and len(c.agreed) == 2

@@ -54,6 +54,27 @@ def test_a_touch_and_a_crossing_in_one_wide_cluster_are_two_contacts() -> None:
     assert kinds(intersect(a, b, tol=2.4663397493769742e-06)) == [("tangent", 0.41084), ("crossing", 0.41442)]
 
 
+MIRROR_A = np.array([[0.22132417463217868, 0.94089899147737466], [0.82240931814185425, 0.48459761761653741],
+                     [0.64108822854342173, 0.24671568029724278], [0.17360103145910455, 0.54284616173057065],
+                     [0.37484967714882089, 0.32195014919176868]])
+MIRROR_B = np.array([[0.23714527487369813, -0.12526962798777785], [0.82442643356508549, 0.34866616321334698],
+                     [0.63612677511714422, 0.58106322056204118], [0.17763216614067445, 0.27119190047707481],
+                     [0.37223779914345645, 0.49796207786174346]])
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+@pytest.mark.parametrize("tol", [1e-10, 1e-9, 1e-7, 1e-5])
+def test_a_touch_7e_4_after_a_crossing_is_a_contact_of_its_own(dim: int, tol: float) -> None:
+    # a quartic and its mirror image in a plane tangent to it at 0.69139 (workbench corpus, tangent
+    # family, seed 6060) cross at 0.69071: within 1e-3, and within tol between from 1e-9 on. The
+    # touch was merged into the crossing, though the curves part by far more than rounding between
+    # them: two contacts, as the exact arbiter says
+    a = RationalBezier(np.c_[MIRROR_A, np.zeros((5, dim - 2))])
+    b = RationalBezier(np.c_[MIRROR_B, np.zeros((5, dim - 2))])
+    assert kinds(intersect(a, b, tol=tol)) == [("crossing", 0.69071), ("tangent", 0.69139)]
+    assert kinds(intersect(b, a, tol=tol)) == [("crossing", 0.69071), ("tangent", 0.69139)]
+
+
 def test_space_touch_next_to_a_crossing_in_an_ill_conditioned_model_frame() -> None:
     # control points at depths 0.025 to 0.97 and up to 37 times off the z axis: the model's own frame
     # magnified the tolerance 1,600 times in the plane, and the touch at 0.34865 merged into the
