@@ -684,11 +684,12 @@ def _one_touch(ca: ExactCurve, cb: ExactCurve, check: PointCheck, m: PointCheck 
     """
     import mpmath
 
-    if check.kind != "tangent" or not _one_place([check.t, m.t], ca):
+    mt, mu = ca.near(m.t, check.t), cb.near(m.u, check.u)  # a touch at a closed edge's seam
+    if check.kind != "tangent" or not _one_place([check.t, mt], ca):
         return False
     rounding = _rounding(ca, cb, tol)
     with mpmath.workdps(ARBITER_DIGITS):
-        t0, t1, u0, u1 = (ca.mp.mpf(x) for x in (check.t, m.t, check.u, m.u))
+        t0, t1, u0, u1 = (ca.mp.mpf(x) for x in (check.t, mt, check.u, mu))
         for q in range(1, 8):
             _, d = _closest_u(ca, cb, t0 + (t1 - t0) * q / 8, u0 + (u1 - u0) * q / 8)
             if d > rounding:

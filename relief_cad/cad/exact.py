@@ -76,6 +76,7 @@ class ExactCurve:
             self._occt_curve = curve = BRepAdaptor_Curve(raw)
             self._identity = True
         self._eval = self._build(curve)
+        self.period = _full_period(self._occt_curve, self.first, self.last)
         pts = [self._occt_curve.Value(float(t)) for t in np.linspace(self.first, self.last, 9)]
         arr = np.array([[p.X(), p.Y(), p.Z()] for p in pts])
         self.size = float(np.linalg.norm(arr.max(axis=0) - arr.min(axis=0))) or 1.0
@@ -180,7 +181,10 @@ class ExactCurve:
         >>> [float(x) for x in ExactCurve(bd.Line((0, 0), (3, 4))).value(2.5)]
         [1.5, 2.0, 0.0]
         """
-        p: list[Any] = self._eval(self.mp.mpf(t))
+        t = self.mp.mpf(t)
+        if self.period is not None and not self.first <= t <= self.last:  # a closed edge: round the seam
+            t = self.first + self.mp.fmod(t - self.first, self.period) % self.period
+        p: list[Any] = self._eval(t)
         if self._identity:
             return p
         m = self._matrix
@@ -216,6 +220,21 @@ class ExactCurve:
         d2 = [(pp[k] - 2 * p0[k] + pm[k]) / (h * h) for k in range(3)]
         return p0, d1, d2
 
+    def near(self, t: float, ref: float) -> float:
+        """``t``, or on a closed periodic edge the parameter of its point nearest to ``ref`` in parameter.
+
+        A contact at a closed edge's seam is found at either end of its range: ``2 pi - 1e-8`` is
+        ``-1e-8`` next to a contact at 0 on a full ellipse.
+
+        >>> import build123d as bd
+        >>> c = ExactCurve(bd.Edge.make_circle(1.0))
+        >>> round(c.near(2 * math.pi - 1e-8, 0.0), 12), ExactCurve(bd.Line((0, 0), (3, 4))).near(4.9, 0.0)
+        (-1e-08, 4.9)
+        """
+        if self.period is None:
+            return t
+        return t + self.period * round((ref - t) / self.period)
+
     def clamp(self, t: Any) -> Any:
         """Clamp ``t`` into the edge's parameter range.
 
@@ -224,3 +243,11 @@ class ExactCurve:
         5.0
         """
         return min(max(t, self.mp.mpf(self.first)), self.mp.mpf(self.last))
+
+
+def _full_period(curve: Any, first: float, last: float) -> float | None:
+    """The period of a periodic ``curve`` whose edge runs once round it (``last - first``), else None."""
+    if curve is None or not curve.IsPeriodic():
+        return None
+    period = float(curve.Period())
+    return period if abs((last - first) - period) <= 1e-12 * max(1.0, period) else None

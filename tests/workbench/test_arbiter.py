@@ -240,3 +240,18 @@ def test_one_touch_located_apart_by_both_sides_is_a_loose_match():
     assert all(d.verdict.winner == "relief_cad" for d in c.disagreements)
     if [r.kind for r in c.occt] == ["tangent"]:  # OCCT's one touch is relief_cad's
         assert len(c.agreed) == 1 and c.disagreements == []
+
+
+@pytest.mark.parametrize("turn", [30.0, 120.0, 150.0, 225.0, 300.0])
+def test_copies_of_a_touch_at_both_ends_of_a_closed_edge_are_one_touch(turn: float) -> None:
+    # an ellipse (radii 200 and 120) and a circle touching it at its vertex, the seam of the closed
+    # edge: OCCT gives the rounded touch as roots at t 1e-8 and at 2 pi - 1e-8, the same place. The
+    # second was "a true tangent relief_cad missed": the arbiter took 2 pi - 1e-8 for the far end
+    import build123d as bd
+
+    loc = bd.Location((-100.0, 50.0, 0), (0, 0, 1), turn)
+    ellipse = bd.Edge.make_ellipse(200.0, 120.0, bd.Plane.XY).moved(loc)
+    circle = bd.Edge.make_circle(40.0).moved(bd.Location((240.0, 0, 0))).moved(loc)
+    c = compare(ellipse, circle)
+    assert c.errors == {} and [r.kind for r in c.relief] == ["tangent"]
+    assert all(d.verdict.winner == "relief_cad" for d in c.disagreements), c.disagreements
