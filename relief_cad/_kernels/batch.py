@@ -78,12 +78,10 @@ def intersect_batch_kernel(
     k = 0
     while k < npairs:
         with cython.nogil:
-            k, n = _batch_run(P, W, offsets, pairs, tol, budget, scratch, rv, k, nres)
-        if n < 0:  # no room for pair k's rows: grow, and run it again (the same bits)
+            k, nres, n = _batch_run(P, W, offsets, pairs, tol, budget, scratch, rv, k, nres)
+        if n < 0:  # no room for pair k's rows after those of the pairs before: grow, and run it again
             res = _grow(res, max(-2 - n, 2 * rv.shape[0]))
             rv = res
-        else:
-            nres = n
     return res[:nres]
 
 
@@ -101,11 +99,12 @@ def _batch_run(
     rv: cython.double[:, :],
     k: cython.Py_ssize_t,
     nres: cython.Py_ssize_t,
-) -> tuple[cython.Py_ssize_t, cython.Py_ssize_t]:
-    """Run pairs ``k, k + 1, ...`` into ``rv``, without the GIL; ``(k, nres)`` when they are done.
+) -> tuple[cython.Py_ssize_t, cython.Py_ssize_t, cython.Py_ssize_t]:
+    """Run pairs ``k, k + 1, ...`` into ``rv`` from row ``nres``, without the GIL: ``(k, nres, 0)`` when done.
 
-    It stops early at the first pair whose rows do not fit (``nres`` is then :func:`_pair_core`'s
-    ``-2 - n``) or that raised (the exception propagates).
+    It stops early at the first pair whose rows do not fit: ``(k, nres, m)``, the rows of the pairs
+    before it kept (``nres`` of them), ``m`` :func:`_pair_core`'s ``-2 - n`` for pair ``k``; or at
+    one that raised (the exception propagates).
     """
     n: cython.Py_ssize_t
     PA: cython.const[cython.double][:, :]
@@ -119,11 +118,11 @@ def _batch_run(
             n = _pair_core(PA, W[offsets[ia] : offsets[ia + 1]], PB, W[offsets[ib] : offsets[ib + 1]],
                            tol[k], budget, k, scratch, rv, nres)
             if n < 0:
-                return k, n
+                return k, nres, n
             _sort_by_t(rv, nres, n)
             nres = n
         k += 1
-    return k, nres
+    return k, nres, 0
 
 
 @cython.cfunc

@@ -8,6 +8,7 @@ import pytest
 from relief_cad.clipping import clip_range, compute_fat_line, distance_coefficients, hull_range
 from relief_cad.curves import RationalBezier
 from relief_cad.errors import InvalidInputError, ShapeError
+from relief_cad.intersection import intersect_many
 
 
 def _dist(line: tuple[float, float, float, float, float], pts: np.ndarray) -> np.ndarray:
@@ -102,6 +103,35 @@ def test_intersect_packed_matches_intersect() -> None:
         mine = sorted((r[2], r[3]) for r in rows if r[0] == k)
         ref = [(x.t, x.u) for x in intersect(curves[i], curves[j])]
         assert mine == ref
+
+
+def _wavy_pairs(n: int) -> list[tuple[RationalBezier, RationalBezier]]:
+    """``n`` pairs of the graph of the Chebyshev polynomial T_7(2x - 1) and a line across it: 7 crossings each."""
+    t7 = [-1.0, 13.0, -47.666666666666664, 85.8, -85.8, 47.666666666666664, -13.0, 1.0]  # Bernstein ordinates
+    xs = np.linspace(0.0, 1.0, 8)
+    return [(RationalBezier(np.column_stack([xs, t7])), RationalBezier([[0.0, 0.01 * k], [1.0, 0.02 * k]]))
+            for k in range(n)]
+
+
+def test_intersect_packed_keeps_the_rows_of_earlier_pairs_when_the_output_grows() -> None:
+    # 9 pairs of 7 crossings: 63 rows, more than the 18 the batch kernel starts with. When pair k's
+    # rows did not fit, the rows grew and pair k ran again, but from row 0: the rows of the pairs
+    # before it in the same call were overwritten (the CAD layer lost 10 of 13 crossings of a spline
+    # through 9 points of a circle)
+    from relief_cad.clipping import intersect_packed
+    from relief_cad.intersection import intersect
+
+    pairs = _wavy_pairs(9)
+    curves = [c for pr in pairs for c in pr]
+    pts = np.concatenate([c.control_points for c in curves])
+    offsets = np.cumsum([0] + [len(c.control_points) for c in curves])
+    rows = intersect_packed(pts, np.ones(pts.shape[0]), offsets, np.arange(18).reshape(9, 2), workers=1)
+    assert rows.shape[0] == 63
+    for k, (a, b) in enumerate(pairs):
+        mine = [(r[2], r[3]) for r in rows if r[0] == k]
+        assert mine == [(x.t, x.u) for x in intersect(a, b)]
+    for k, listed in enumerate(intersect_many(pairs, workers=1)):
+        assert [(x.t, x.u, x.kind) for x in listed] == [(x.t, x.u, x.kind) for x in intersect(*pairs[k])]
 
 
 def test_intersect_packed_rows_are_the_same_on_any_number_of_threads() -> None:
