@@ -818,3 +818,20 @@ def test_a_curve_crossing_its_mirror_image_just_before_touching_it_gives_both() 
     assert [(r.kind, round(r.t, 5)) for r in found] == [("crossing", 0.69071), ("tangent", 0.69139)], found
     c = compare(a, b)
     assert c.errors == {} and c.disagreements == [] and len(c.agreed) == 2
+
+
+def test_a_spline_through_nine_points_of_a_circle_meets_it_at_each() -> None:
+    """A cubic spline through 9 points of an arc of radius 200 (8 rational pieces against 2).
+
+    The pieces' pairs run through the batch kernel in one call with 20 rows; it starts with room
+    for 18 and, growing, dropped the rows of the pairs before: 3 of the points were found.
+    """
+    arc = bd.Edge.make_circle(200.0, bd.Plane.XY, start_angle=-40.0, end_angle=100.0)
+    angles = [math.radians(30.0) + x for x in np.linspace(-0.5, 0.9, 9)]
+    spline = bd.Edge.make_spline([bd.Vector(200.0 * math.cos(a), 200.0 * math.sin(a)) for a in angles])
+    found = api.intersections(arc, spline)
+    for a in angles:
+        assert any(math.dist(r.point, (200.0 * math.cos(a), 200.0 * math.sin(a), 0.0)) <= 1e-7 for r in found), a
+    c = compare(arc, spline)
+    assert c.errors == {} and not [d for d in c.disagreements if d.claimant == "occt" and d.verdict.truth == "crossing"
+                                   and d.verdict.winner == "occt"], c.disagreements
