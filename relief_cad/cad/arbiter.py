@@ -296,10 +296,11 @@ def arbitrate_overlap(
     distance is within ``tol``; it is then ``"coincident"`` when the distances are at the
     rounding level of the data (``1e-3 tol`` or ``1e-13`` of the curves' size, the
     larger), and otherwise ``"within_tolerance"`` unless the distance has an isolated
-    minimum far below the rest (a tangent contact that a tolerance stretched into a
-    segment: the verdict is then ``"tangent"``; deep minima farther apart than 1e-3 of
-    ``a``'s range are contacts bounding a stretch within tol, an overlap). A claim that
-    fails is resolved into the true isolated points in the range.
+    minimum far below the rest, or the range lies within 1e-3 of both curves' ranges (a
+    tangent contact or a near-miss that a tolerance stretched into a segment: the verdict is
+    then ``"tangent"``, the library's rule; deep minima farther apart than 1e-3 of ``a``'s
+    range are contacts bounding a stretch within tol, an overlap). A claim that fails is
+    resolved into the true isolated points in the range.
 
     Parameters
     ----------
@@ -364,7 +365,10 @@ def arbitrate_overlap(
         if dmax <= tol:
             dmin = min(f.distance for f in found) if found else float(min(dists))
             deep = dmin * 10 < dmax and (dmin <= rounding or dmin * 1e3 < tol)
-            if found and deep and _one_place([f.t for f in found] + _end_contacts(ca, cb, ts, us), ca):
+            # a near-miss within tol: the whole range within 1e-3 of both curves' ranges
+            short = _one_place([float(t0), float(t1)], ca) and _one_place([float(u0), float(u1)], cb)
+            ends = _end_contacts(ca, cb, ts, us)
+            if found and (deep or short) and _one_place([f.t for f in found] + ends, ca):
                 return OverlapCheck("tangent", dmax, tuple(found))
             return OverlapCheck("within_tolerance", dmax)
         if not found:

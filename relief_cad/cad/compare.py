@@ -834,10 +834,16 @@ def _judge_overlap(
     truth_pts = chk.points
     reach = max(tol, math.sqrt(tol * ca.size) * 10)
 
-    def at_truth(c: EdgeResult) -> bool:
-        return isinstance(c, EdgeIntersection) and any(_pt_dist(c.point, p.point) <= reach for p in truth_pts)
+    def near(c: EdgeResult, pts: Sequence[PointCheck]) -> bool:
+        return isinstance(c, EdgeIntersection) and any(_pt_dist(c.point, p.point) <= reach for p in pts)
 
-    counter += tuple(x for x in theirs if all(x is not c for c in counter) and at_truth(x))
+    def at_truth(c: EdgeResult) -> bool:
+        return near(c, truth_pts)
+
+    # the evidence outside the range: points at a true point that none inside it stands for
+    # (the next crossing of two circles meeting twice 7e-5 apart is not this one's)
+    alone = [p for p in truth_pts if not any(near(c, [p]) for c in counter)]
+    counter += tuple(x for x in theirs if all(x is not c for c in counter) and near(x, alone))
     matched = len(counter) == len(truth_pts) and all(at_truth(c) for c in counter)
     return counter, _overlap_failed(chk, counter, matched, other)
 
@@ -845,8 +851,10 @@ def _judge_overlap(
 def _overlap_failed(chk: OverlapCheck, counter: tuple[EdgeResult, ...], matched: bool, other: str) -> Verdict:
     """The verdict on an overlap claim that does not hold: ``other`` wins when it gave the true points."""
     truth_pts = chk.points
-    if chk.status == "tangent":
-        what = f"a tangent point, not an overlap (distance rises to {chk.max_distance:.3g} along the range)"
+    status = chk.status
+    if status == "tangent":  # one contact, stretched by tol: a touch, or a crossing at a small angle
+        status = truth_pts[0].kind if len(truth_pts) == 1 else status
+        what = f"a {status} point, not an overlap (distance rises to {chk.max_distance:.3g} along the range)"
     elif chk.status == "none":
         what = (
             f"nothing: the curves never come within tol along the range (closest sampled approach "
@@ -859,13 +867,13 @@ def _overlap_failed(chk: OverlapCheck, counter: tuple[EdgeResult, ...], matched:
     if matched:
         return Verdict(
             other,
-            chk.status if chk.status != "none" else "nothing",
+            status if status != "none" else "nothing",
             f"the true answer is {what}",
             chk.max_distance,
         )
     return Verdict(
         "neither",
-        chk.status,
+        status,
         f"the true answer is {what}; {other} reported {len(counter)} point(s)",
         chk.max_distance,
     )

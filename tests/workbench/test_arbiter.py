@@ -255,3 +255,43 @@ def test_copies_of_a_touch_at_both_ends_of_a_closed_edge_are_one_touch(turn: flo
     c = compare(ellipse, circle)
     assert c.errors == {} and [r.kind for r in c.relief] == ["tangent"]
     assert all(d.verdict.winner == "relief_cad" for d in c.disagreements), c.disagreements
+
+
+@pytest.mark.parametrize(("r1", "r2"), [(10.0, 5.0), (1.0, 2.0)])
+@pytest.mark.parametrize("gap", [5e-8, 3e-8])
+def test_circles_passing_within_tol_touch_once_they_do_not_overlap(r1: float, r2: float, gap: float) -> None:
+    # two circles 0.3 to 0.5 tol apart (tol 1e-7): one near-miss contact, the library's rule. OCCT
+    # gives the stretch within tol, 3e-4 of a turn, as an overlap, which the arbiter accepted ("the
+    # curves stay within tol over the range": the minimum is not 10 times below the ends). A range
+    # within 1e-3 of both curves' ranges is one contact
+    import build123d as bd
+
+    a = bd.Edge.make_circle(r1)
+    d = r1 + r2 + gap
+    b = bd.Edge.make_circle(r2).moved(bd.Location((d * math.cos(0.7), d * math.sin(0.7), 0)))
+    c = compare(a, b)
+    assert c.errors == {} and [r.kind for r in c.relief] == ["tangent"]
+    assert c.relief[0].distance == pytest.approx(gap, rel=1e-3)
+    assert all(d.verdict.winner == "relief_cad" for d in c.disagreements), c.disagreements
+    for d in c.disagreements:  # OCCT's overlap, if it gives one, is the near-miss tangent
+        assert d.claimant == "occt" and d.verdict.truth == "tangent"
+
+
+def test_an_overlap_claim_round_one_of_two_close_crossings_is_judged_by_that_crossing() -> None:
+    # circles of radius 0.0054 and 0.0036 (workbench fuzz) overlapping by 3e-7: two crossings 7e-5
+    # apart, within tol 1e-7 between. OCCT gives a short overlap round each, the arbiter the true
+    # crossing in each range; relief_cad's crossing outside the range was counted as evidence too
+    # (within sqrt(tol size) of the truth), two points for one: "neither" instead of relief_cad
+    import build123d as bd
+
+    c0, r1, r2, gap, th = (1.1879744723886005, 0.3018343113921457), 0.005364370474294607, 0.003614887996940122, \
+        -3e-07, 1.9941362304913497
+    a = bd.Edge.make_circle(r1, bd.Plane.XY.rotated((0, 0, math.degrees(5.269704047781069)))).moved(
+        bd.Location((c0[0], c0[1], 0)))
+    d = r1 + r2 + gap
+    at = math.degrees(th + math.pi)
+    b = bd.Edge.make_circle(r2, bd.Plane.XY, start_angle=at - 70, end_angle=at + 70).moved(
+        bd.Location((c0[0] + d * math.cos(th), c0[1] + d * math.sin(th), 0)))
+    c = compare(a, b)
+    assert c.errors == {} and [r.kind for r in c.relief] == ["crossing", "crossing"]
+    assert all(d.verdict.winner == "relief_cad" for d in c.disagreements), c.disagreements
