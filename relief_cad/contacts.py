@@ -718,12 +718,16 @@ def whole_overlap(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap |
     if pa.shape[1] != pb.shape[1]:
         return None
     closed = _near(pa[0], pa[-1], tol)
-    for u0, u1 in ((0.0, 1.0), (1.0, 0.0)):
-        i0, i1 = (0, -1) if u0 == 0.0 else (-1, 0)
-        same_ends = _near(pa[0], pb[i0], tol) and _near(pa[-1], pb[i1], tol)
-        if same_ends and (not closed or _runs_along(a, b, u1 - u0, tol)):
-            if _coincide(a, b, 0.0, 1.0, u0, u1, tol):
-                return Overlap(t=(0.0, 1.0), u=(u0, u1))
+    senses = [(u0, u1) for u0, u1, i0, i1 in ((0.0, 1.0, 0, -1), (1.0, 0.0, -1, 0))
+              if _near(pa[0], pb[i0], tol) and _near(pa[-1], pb[i1], tol)]
+    for u0, u1 in senses:
+        if (not closed or _runs_along(a, b, u1 - u0, tol)) and _coincide(a, b, 0.0, 1.0, u0, u1, tol):
+            return Overlap(t=(0.0, 1.0), u=(u0, u1))
+    # closed curves whose interior points' feet tell no sense: a curve running out and back along
+    # itself (its first and last control points one), where a(1/4) and a(3/4) may be one point
+    for u0, u1 in senses if closed else ():
+        if _coincide(a, b, 0.0, 1.0, u0, u1, tol):
+            return Overlap(t=(0.0, 1.0), u=(u0, u1))
     return None
 
 
