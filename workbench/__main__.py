@@ -55,9 +55,17 @@ def _say(msg: str) -> None:
 
 
 def _cmd_corpus(args: argparse.Namespace) -> int:
-    from .corpus import RANDOM_FAMILIES, CorpusError, build_corpus, bundled_items, write_corpus
+    from .corpus import (
+        CAD_FAMILIES,
+        CONTACT_FAMILIES,
+        RANDOM_FAMILIES,
+        CorpusError,
+        build_corpus,
+        bundled_items,
+        write_corpus,
+    )
 
-    fams = args.families.split(",") if args.families else list(RANDOM_FAMILIES) + ["glyph", "sketch", "step"]
+    fams = args.families.split(",") if args.families else [*RANDOM_FAMILIES, *CAD_FAMILIES, *CONTACT_FAMILIES]
     problems: list[str] = []
     source = bundled_items() if args.bundled else build_corpus(fams, args.count, args.seed, args.step or ())
 
@@ -292,7 +300,7 @@ def _add_corpus(sub: Any) -> None:
         default="",
         help="comma-separated families (default: all); random: cubic, "
         "rational, high-degree, ill-conditioned, tangent, overlap, shared-end, near-miss, scaled, "
-        "space; CAD: glyph, sketch, step",
+        "space; CAD: glyph, sketch, step, conic (conics and splines in contact)",
     )
     c.add_argument("--count", type=int, default=20, help="items per family (default 20)")
     c.add_argument("--seed", type=int, default=0, help="seed of the random families (default 0)")

@@ -59,6 +59,7 @@ __all__ = [
     "random_family",
     "glyph_family",
     "sketch_family",
+    "conic_family",
     "step_family",
     "step_files",
     "read_step",
@@ -83,6 +84,7 @@ RANDOM_FAMILIES = (
     "space",
 )
 CAD_FAMILIES = ("glyph", "sketch", "step")
+CONTACT_FAMILIES = ("conic",)  # not in the bundled corpus
 
 DATA_DIR = Path(__file__).resolve().parent / "data"
 
@@ -624,6 +626,88 @@ def sketch_family(count: int, seed: int = 0) -> Iterator[Item]:
     return
 
 
+CONIC_KINDS = ("circles", "ellipse-circle", "line-conic", "spline-at-joint", "spline-on-circle", "near-miss",
+               "seam")
+
+
+def conic_family(count: int, seed: int = 0) -> Iterator[Item]:
+    """Pairs of build123d conics and splines in contact, at scales from 0.01 to 1000 (``meta["kind"]``).
+
+    In turn: circles touching outside or inside (arcs or closed, the seam sometimes at the touch); an
+    ellipse and a circle touching at a vertex (the ellipse's seam at one); a line tangent to a
+    circle or an ellipse; a spline through an arc's middle, where both have a span joint (it crosses
+    there and again close by); a spline through 9 points of an arc (crossings at each, the curves
+    close between); circles 0.3 to 3 tol apart or overlapping (tol 1e-7); a line through, or
+    tangent at, the seam of a closed periodic spline.
+    """
+    rng = np.random.default_rng([seed, 303])
+    for k in range(count):
+        kind = CONIC_KINDS[k % len(CONIC_KINDS)]
+        a, b = _conic_pair(kind, rng)
+        yield Item(f"conic-{seed}-{k:06d}", "conic", brep_text(a), brep_text(b), None, {"kind": kind})
+
+
+def _conic_pair(kind: str, rng: np.random.Generator) -> tuple[Any, Any]:
+    """One pair of :func:`conic_family`'s ``kind``, placed and turned at random.
+
+    Not one screen: one short branch per kind, sharing the random placement.
+    """
+    import build123d as bd
+
+    size = float(10 ** rng.uniform(-2, 3))
+    r1 = size * float(rng.uniform(0.3, 1.0))
+    r2 = size * float(rng.uniform(0.2, 2.0))
+    turn = float(rng.uniform(0, 360))
+    place = bd.Location(tuple(float(x) for x in rng.uniform(-1, 1, 2) * 10 ** rng.uniform(-1, 3)) + (0.0,),
+                        (0, 0, 1), turn)
+
+    def arc(r: float, at: float, full: bool) -> Any:  # an arc of 140 degrees about angle ``at``, or a circle
+        if full:
+            return bd.Edge.make_circle(r, bd.Plane.XY.rotated((0, 0, at)))
+        return bd.Edge.make_circle(r, bd.Plane.XY, start_angle=at - 70, end_angle=at + 70)
+
+    full = bool(rng.integers(0, 2))
+    if kind == "circles":
+        inside = bool(rng.integers(0, 2)) and r2 < r1
+        d = r1 - r2 if inside else r1 + r2
+        a = arc(r1, float(rng.choice([0.0, 37.0])) if full else 0.0, full)
+        b = arc(r2, 0.0 if inside else 180.0, bool(rng.integers(0, 2))).moved(bd.Location((d, 0, 0)))
+    elif kind == "ellipse-circle":
+        rb = r1 * float(rng.uniform(0.1, 0.95))
+        a = bd.Edge.make_ellipse(r1, rb, bd.Plane.XY)
+        b = bd.Edge.make_circle(r2).moved(bd.Location((r1 + r2, 0, 0)))
+    elif kind == "line-conic":
+        rb = r1 * float(rng.uniform(0.1, 1.0))
+        a = bd.Edge.make_ellipse(r1, rb, bd.Plane.XY) if rb < r1 else arc(r1, 90.0, full)
+        phi = float(rng.uniform(0, 2 * math.pi)) if rb < r1 else math.pi / 2
+        q, t = (r1 * math.cos(phi), rb * math.sin(phi)), (-r1 * math.sin(phi), rb * math.cos(phi))
+        n, f, length = math.hypot(*t), float(rng.uniform(0.1, 0.9)), size * float(rng.uniform(0.2, 3))
+        b = bd.Edge.make_line((q[0] - f * length * t[0] / n, q[1] - f * length * t[1] / n),
+                              (q[0] + (1 - f) * length * t[0] / n, q[1] + (1 - f) * length * t[1] / n))
+    elif kind == "spline-at-joint":
+        a = arc(r1, 90.0, False)
+        bend, half = float(rng.uniform(-0.5, 0.8)) / r1, r1 * float(rng.uniform(0.3, 1.5))
+        b = bd.Edge.make_spline([bd.Vector(x, r1 + 0.5 * bend * x * x + 0.05 * bend * bend * x**3)
+                                 for x in np.linspace(-half, half, 7)])
+    elif kind == "spline-on-circle":
+        a = arc(r1, 90.0, False)
+        b = bd.Edge.make_spline([bd.Vector(r1 * math.cos(x), r1 * math.sin(x))
+                                 for x in np.linspace(math.pi / 2 - 0.5, math.pi / 2 + 0.9, 9)])
+    elif kind == "near-miss":
+        gap = float(rng.choice([-3.0, -0.5, -0.3, 0.3, 0.5, 3.0])) * 1e-7
+        a = arc(r1, 0.0, full)
+        b = arc(r2, 180.0, bool(rng.integers(0, 2))).moved(bd.Location((r1 + r2 + gap, 0, 0)))
+    else:  # seam
+        n = int(rng.integers(4, 9))
+        ang, rad = np.sort(rng.uniform(0, 2 * math.pi, n)), r1 * rng.uniform(0.6, 1.4, n)
+        pts = [bd.Vector(float(r * math.cos(q)), float(r * math.sin(q)))
+               for q, r in zip(ang, rad, strict=True)]
+        a = bd.Edge.make_spline(pts, periodic=True)
+        tg = a.tangent_at(0.0) if rng.integers(0, 2) else bd.Vector(1.0, 0.0)
+        b = bd.Edge.make_line(pts[0] - tg * 2 * r1, pts[0] + tg * 2 * r1)
+    return a.moved(place), b.moved(place)
+
+
 def step_files(paths: Iterable[str | os.PathLike[str]]) -> list[Path]:
     """The STEP files named: files as given, folders searched for ``*.step`` / ``*.stp``."""
     files: list[Path] = []
@@ -812,5 +896,8 @@ def build_corpus(
             yield from sketch_family(count, seed)
         elif fam == "step":
             yield from step_family(list(step_paths) or [bundled_step_dir()], count)
+        elif fam == "conic":
+            yield from conic_family(count, seed)
         else:
-            raise CorpusError(f"expected a family in {RANDOM_FAMILIES + CAD_FAMILIES}, received {fam!r}")
+            raise CorpusError(
+                f"expected a family in {RANDOM_FAMILIES + CAD_FAMILIES + CONTACT_FAMILIES}, received {fam!r}")
