@@ -489,20 +489,22 @@ def _bspline_segments(curve: Any, first: float, last: float, m: np.ndarray | Non
 
 
 _KNOT_TOL = 1e-12  # the parametric tolerance given to GeomConvert_BSplineCurveToBezierCurve
+_KNOT_RTOL = 1e-14  # a bound this close to a knot, relative to it, is on it (BREP text keeps 15 digits)
 
 
 def _on_knot(curve: Any, x: float) -> float:
-    """``x``, or the knot of ``curve`` within :data:`_KNOT_TOL` of it.
+    """``x``, or the knot of ``curve`` within :data:`_KNOT_TOL` of it, or :data:`_KNOT_RTOL` of the knot.
 
     OCCT 8.0's ``GeomConvert_BSplineCurveToBezierCurve`` returns arcs whose poles are
     uninitialised memory when a bound lies a few ulps off a knot of a periodic curve (an edge
-    range read back from a BREP file, 3e-19 below the last knot): the bound is put on the knot.
+    range read back from a BREP file, 3e-19 below the last knot, or 4.3e-12 above the last knot
+    at 1646: BREP text keeps 15 digits): the bound is put on the knot.
     Periodic curves only (and :func:`_check_arc` on their arcs): the failure was seen on them,
     and the two checks would add a third to the conversion of a glyph's 10,000 spline pieces.
     """
     for i in range(1, curve.NbKnots() + 1):
         k = curve.Knot(i)
-        if abs(x - k) <= _KNOT_TOL:
+        if abs(x - k) <= max(_KNOT_TOL, _KNOT_RTOL * abs(k)):
             return float(k)
     return x
 

@@ -511,6 +511,34 @@ def test_bspline_bound_a_few_ulps_off_a_knot_is_converted_on_the_curve() -> None
                 assert np.allclose(seg.curve(s), adaptor.Value(t).Coord(), rtol=0.0, atol=1e-15)
 
 
+def test_periodic_spline_read_back_from_brep_text_is_converted() -> None:
+    """A closed periodic spline of size 500 (workbench conic family) written as BREP text and read
+    back: the text keeps the edge's range to 15 digits, 4.3e-12 above the last knot at 1646. That
+    was not on the knot for ``_on_knot`` (within 1e-12), and OCCT 8.0 gave a middle arc 7 off the
+    curve, so the edge could not be used. A bound within 1e-14 of a knot, relative, is on it."""
+    import io
+
+    from OCP.BRepTools import BRepTools
+    from OCP.TopoDS import TopoDS_Shape
+
+    pts = [bd.Vector(500.0 * math.cos(q), 400.0 * math.sin(q)) for q in (0.3, 1.4, 2.1, 3.3, 4.0, 5.2, 5.9)]
+    written = io.BytesIO()
+    BRepTools.Write_s(bd.Edge.make_spline(pts, periodic=True).wrapped, written)
+    shape = TopoDS_Shape()
+    BRepTools.Read_s(shape, io.BytesIO(written.getvalue()), BRep_Builder())
+    edge = downcast_edge(shape)
+    curve = BRep_Tool.Curve_s(edge, 0.0, 0.0)
+    first, last = BRep_Tool.Range_s(edge)
+    knot = curve.Knot(curve.NbKnots())
+    assert abs(last - knot) <= 1e-14 * knot  # the text keeps 15 digits of the range (OCCT 8.0: 4.3e-12 off)
+    adaptor = BRepAdaptor_Curve(edge)
+    segs = ocp.edge_segments(edge)
+    assert segs[0].t0 == first and segs[-1].t1 == last
+    for seg in segs:
+        for t, s in ((seg.t0, 0.0), (0.5 * (seg.t0 + seg.t1), 0.5), (seg.t1, 1.0)):
+            assert np.allclose(seg.curve(s), adaptor.Value(t).Coord(), rtol=0.0, atol=1e-9)
+
+
 def test_an_arc_off_its_curve_is_an_error_not_an_answer() -> None:
     """The guard on OCCT's Bézier arcs: an arc that does not run on the curve raises OcctError."""
     from OCP.GeomConvert import GeomConvert_BSplineCurveToBezierCurve
