@@ -8,13 +8,13 @@ Exit status: 0 everything asked for was done; 1 some items or inputs failed (the
 from __future__ import annotations
 
 import argparse
-import contextlib
 import signal
 import sys
 import time
-from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
+
+from ._signals import sigint_held
 
 __all__ = [
     "main",
@@ -357,25 +357,6 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
-@contextlib.contextmanager
-def _held_interrupt() -> Iterator[None]:
-    """Hold a Ctrl-C that comes during the block and raise it as KeyboardInterrupt at its end.
-
-    OCP's extension modules are pybind11 modules: a KeyboardInterrupt raised while one
-    initialises comes back as an ``ImportError`` (which an ``except ImportError`` then swallows)
-    and leaves the type registry half filled, so that every later ``import OCP`` in that process
-    and in the worker processes forked from it fails ("... is already defined").
-    """
-    held: list[int] = []
-    old = signal.signal(signal.SIGINT, lambda signum, frame: held.append(signum))
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGINT, old)
-    if held:
-        raise KeyboardInterrupt
-
-
 def _preload() -> None:
     """Import relief_cad and the CAD layer (OCP) up front, where a Ctrl-C cannot cut them in half."""
     import relief_cad  # noqa: F401
@@ -390,7 +371,7 @@ def main(argv: list[str] | None = None) -> int:
     """Run the workbench command line; returns the exit status (see the module docstring)."""
     try:
         args = build_parser().parse_args(argv)
-        with _held_interrupt():
+        with sigint_held():
             _preload()
         from relief_cad.errors import ReliefCadError
     except KeyboardInterrupt:

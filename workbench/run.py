@@ -29,6 +29,7 @@ from tqdm import tqdm  # type: ignore[import-untyped]
 
 from relief_cad.errors import ReliefCadError
 
+from ._signals import sigint_held
 from .corpus import CorpusError, CorpusInfo, Item, check_corpus, read_corpus
 from .versions import tool_versions
 
@@ -282,14 +283,16 @@ def _drive(ex: Executor, window: int, batches: Iterator[list[Item | CorpusError]
                 return
             pending.add(ex.submit(_evaluate_batch, b))
 
-    fill()
+    with sigint_held():
+        fill()
     while pending:
         done, _ = wait(pending, timeout=0.25, return_when=FIRST_COMPLETED)  # short: Ctrl-C is seen
         for fut in done:
             pending.discard(fut)
             if write(fut.result()):
                 return True
-        fill()
+        with sigint_held():
+            fill()
     return False
 
 
