@@ -724,12 +724,11 @@ def whole_overlap(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap |
     closed = _near(pa[0], pa[-1], tol)
     senses = [(u0, u1) for u0, u1, i0, i1 in ((0.0, 1.0, 0, -1), (1.0, 0.0, -1, 0))
               if _near(pa[0], pb[i0], tol) and _near(pa[-1], pb[i1], tol)]
-    for u0, u1 in senses:
-        if (not closed or _runs_along(a, b, u1 - u0, tol)) and _coincide(a, b, 0.0, 1.0, u0, u1, tol):
-            return Overlap(t=(0.0, 1.0), u=(u0, u1))
-    # closed curves whose interior points' feet tell no sense: a curve running out and back along
-    # itself (its first and last control points one), where a(1/4) and a(3/4) may be one point
-    for u0, u1 in senses if closed else ():
+    # closed curves run along each other in the sense the feet of a's interior points show; when
+    # they show none (a curve running out and back along itself, its first and last control points
+    # one, where a(1/4) and a(3/4) may be one point), each sense whose ends match is tried
+    along = [(u0, u1) for u0, u1 in senses if _runs_along(a, b, u1 - u0, tol)] if closed else senses
+    for u0, u1 in along or senses:
         if _coincide(a, b, 0.0, 1.0, u0, u1, tol):
             return Overlap(t=(0.0, 1.0), u=(u0, u1))
     return None

@@ -116,11 +116,11 @@ def _gap_between(HA: cython.const[cython.double][:, :], HB: cython.const[cython.
 def _point_like(HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :],
                 pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssize_t, tl: cython.double,
                 wa: cython.double[:, :], wb: cython.double[:, :]) -> cython.bint:
-    """True when each curve stays within ``tl`` of its point ``i`` up to its point ``j`` (5 samples)."""
+    """True when each curve stays within ``tl`` of its point ``i`` up to its point ``j`` (4 samples)."""
     q: cython.Py_ssize_t
     x0, y0, _a, _b, _c, _d = _eval(HA, pts[i, 0], wa)
     x1, y1, _a, _b, _c, _d = _eval(HB, pts[i, 1], wb)
-    for q in range(5):
+    for q in range(1, 5):
         f = q / 4.0
         x, y, _a, _b, _c, _d = _eval(HA, pts[i, 0] + f * (pts[j, 0] - pts[i, 0]), wa)
         x2, y2, _a, _b, _c, _d = _eval(HB, pts[i, 1] + f * (pts[j, 1] - pts[i, 1]), wb)

@@ -837,14 +837,11 @@ def _judge_overlap(
     def near(c: EdgeResult, pts: Sequence[PointCheck]) -> bool:
         return isinstance(c, EdgeIntersection) and any(_pt_dist(c.point, p.point) <= reach for p in pts)
 
-    def at_truth(c: EdgeResult) -> bool:
-        return near(c, truth_pts)
-
     # the evidence outside the range: points at a true point that none inside it stands for
     # (the next crossing of two circles meeting twice 7e-5 apart is not this one's)
     alone = [p for p in truth_pts if not any(near(c, [p]) for c in counter)]
     counter += tuple(x for x in theirs if all(x is not c for c in counter) and near(x, alone))
-    matched = len(counter) == len(truth_pts) and all(at_truth(c) for c in counter)
+    matched = len(counter) == len(truth_pts) and all(near(c, truth_pts) for c in counter)
     return counter, _overlap_failed(chk, counter, matched, other)
 
 
@@ -855,7 +852,7 @@ def _overlap_failed(chk: OverlapCheck, counter: tuple[EdgeResult, ...], matched:
     if status == "tangent":  # one contact, stretched by tol: a touch, or a crossing at a small angle
         status = truth_pts[0].kind if len(truth_pts) == 1 else status
         what = f"a {status} point, not an overlap (distance rises to {chk.max_distance:.3g} along the range)"
-    elif chk.status == "none":
+    elif status == "none":
         what = (
             f"nothing: the curves never come within tol along the range (closest sampled approach "
             f"{chk.min_distance:.3g}, farthest {chk.max_distance:.3g})"

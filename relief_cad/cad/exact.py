@@ -183,7 +183,7 @@ class ExactCurve:
         """
         t = self.mp.mpf(t)
         if self.period is not None and not self.first <= t <= self.last:  # a closed edge: round the seam
-            t = self.first + self.mp.fmod(t - self.first, self.period) % self.period
+            t = self.first + (t - self.first) % self.period
         p: list[Any] = self._eval(t)
         if self._identity:
             return p
