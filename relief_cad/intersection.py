@@ -26,8 +26,10 @@ The planar solver (one compiled kernel, :mod:`relief_cad._kernels.planar`):
    when that iteration reaches a fixed point in double parameters. Neighbouring
    roots with no measurable gap between them merge into one tangent contact
    (a double root split by rounding) unless both are certified (genuine
-   crossings as close as 1e-8 stay two). A cluster without a root is a near-miss:
-   one tangent contact at the closest approach when the gap is within ``tol``;
+   crossings as close as 1e-8 stay two); at an angle no rounded touch shows they
+   are one crossing found twice. A cluster without a root is a near-miss: one tangent contact
+   at the closest approach when the gap is within ``tol`` and no root or end meeting
+   lies down the valley from it (a stalled iteration on a small-angle crossing's flank);
 5. the kind is ``"crossing"`` for a certified (simple) root unless the tangents
    are parallel to ``|sin| < 1e-12``; an uncertified root (a double or triple
    root as far as double-double can tell) is ``"tangent"`` when ``|sin| < 1e-7``

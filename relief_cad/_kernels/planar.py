@@ -12,7 +12,7 @@ import math
 
 import cython
 import numpy as np
-from cython.cimports.libc.math import hypot
+from cython.cimports.libc.math import hypot, sqrt
 
 from .bezier import _cartesian, _curve_box_update, _eval, _frame, _grow, _homog_into, _segment
 from .certify import _polish_dd
@@ -98,16 +98,93 @@ def _two_roots(pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssiz
 @cython.nogil
 @cython.exceptval(check=False)
 def _gap_between(HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :],
-                 pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssize_t,
+                 t0: cython.double, u0: cython.double, t1: cython.double, u1: cython.double,
                  wa: cython.double[:, :], wb: cython.double[:, :]) -> cython.double:
-    """The largest distance from ``a`` to ``b`` at 7 points evenly spaced in (t, u) from ``i`` to ``j``."""
+    """The largest distance from ``a`` to ``b`` at 7 points evenly spaced from (t0, u0) to (t1, u1)."""
     q: cython.Py_ssize_t
     gap: cython.double = 0.0
     for q in range(1, 8):
         f = q / 8.0
-        x, y, _a, _b, _c, _d = _eval(HA, pts[i, 0] + f * (pts[j, 0] - pts[i, 0]), wa)
-        gap = max(gap, _local_dist(HB, x, y, pts[i, 1] + f * (pts[j, 1] - pts[i, 1]), wb))
+        x, y, _a, _b, _c, _d = _eval(HA, t0 + f * (t1 - t0), wa)
+        gap = max(gap, _local_dist(HB, x, y, u0 + f * (u1 - u0), wb))
     return gap
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _flank_root(HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :],
+                t: cython.double, u: cython.double, d: cython.double, rnd: cython.double,
+                floor: cython.double, wa: cython.double[:, :], wb: cython.double[:, :]
+                ) -> tuple[cython.double, cython.double, cython.double]:
+    """The crossing on whose flank a cluster's closest approach ``(t, u)``, ``d`` apart, lies.
+
+    Along a crossing at a small angle the distance has a long narrow valley, where the damped
+    iteration of :func:`_closest` stalls: a spline fitted to an arc, crossing it at sin 1.4e-5,
+    gave 6 "touches" 1e-8 to 2e-8 off it, up to 2e-3 from the crossing (which a pass that chains
+    touches then made an overlap). A root that Newton reaches from there, the curves between them
+    no farther apart than ``max(4 d, floor)`` (one contact, as in :func:`_two_roots`), is the
+    cluster's contact: returned with distance ``-1`` (else ``(t, u, d)`` as given). So is the
+    closest approach itself when it is a root (``d <= rnd``): one at an end of a span, where
+    Newton's iterates left the unit square, is no touch unless its angle says so.
+    """
+    if d <= rnd:
+        return t, u, -1.0
+    t2, u2, r2 = _newton(HA, HB, t, u, wa, wb, 60)
+    if r2 > rnd or _gap_between(HA, HB, t, u, t2, u2, wa, wb) > max(4.0 * d, floor):
+        return t, u, d
+    return t2, u2, -1.0
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _crosses(HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :], t: cython.double,
+             u: cython.double, rnd: cython.double, wa: cython.double[:, :],
+             wb: cython.double[:, :]) -> cython.bint:
+    """True when curves meeting at ``(t, u)`` (a root up to rounding) cross at an angle no touch shows.
+
+    A touch found to within rounding (``|a - b| <= rnd``) may lie ``s = sqrt(rnd / c)`` along from
+    the true touch (``c`` half the relative curvature), where the tangents make ``sin ~ 2 c s =
+    2 sqrt(c rnd)``: 2.4e-7 at curvature 1 in the frame. A crossing's angle is its own. So the
+    meeting crosses when ``sin >= max(1e-7, 8 sqrt(rnd (ka + kb)))`` (``ka``, ``kb`` the
+    curvatures); never where a first derivative vanishes (a cusp: the post-pass decides).
+    """
+    _ax, _ay, adx, ady, addx, addy = _eval(HA, t, wa)
+    _bx, _by, bdx, bdy, bddx, bddy = _eval(HB, u, wb)
+    la = hypot(adx, ady)
+    lb = hypot(bdx, bdy)
+    if la == 0.0 or lb == 0.0:
+        return False
+    ka = abs(adx * addy - ady * addx) / (la * la * la)
+    kb = abs(bdx * bddy - bdy * bddx) / (lb * lb * lb)
+    return abs(adx * bdy - ady * bdx) / (la * lb) >= max(1e-7, 8.0 * sqrt(rnd * (ka + kb)))
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _on_flank(HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :],
+              pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssize_t, rnd: cython.double,
+              floor: cython.double, wa: cython.double[:, :], wb: cython.double[:, :]) -> cython.bint:
+    """True when one of points ``i``, ``j`` is a near-miss touch on the flank of the other contact.
+
+    A cluster's closest approach (a touch found by no root, column 4 ``0``) that a root or an
+    end meeting (a higher column 4) lies within 1e-2 of in both parameters, the curves between
+    them no farther apart than ``max(4 d, floor)`` (``d`` the touch's distance; one contact, as in
+    :func:`_two_roots`), is no local minimum of the distance: the damped iteration of
+    :func:`_closest` stalled on the way down. A spline fitted to an arc touches it at a span's
+    end; the closest approach came out 1e-10 off, 3e-4 in t and 2e-3 in u before it, and a pass
+    that chains touches made an overlap of the two.
+    """
+    e: cython.Py_ssize_t = i if pts[i, 4] < pts[j, 4] else j
+    r: cython.Py_ssize_t = j if e == i else i
+    if pts[e, 4] != 0.0 or pts[r, 4] == 0.0 or pts[e, 2] <= rnd:
+        return False
+    if abs(pts[i, 0] - pts[j, 0]) > 1e-2 or abs(pts[i, 1] - pts[j, 1]) > 1e-2:
+        return False
+    gap = _gap_between(HA, HB, pts[e, 0], pts[e, 1], pts[r, 0], pts[r, 1], wa, wb)
+    return gap <= max(4.0 * pts[e, 2], floor)
 
 
 @cython.cfunc
@@ -847,13 +924,14 @@ def _pair_core(
         if nroots == 0:
             t, u, d = _closest(HA, HB, bt, bu, wa, wb, 60)
             if d <= tl:
+                t, u, d = _flank_root(HA, HB, t, u, d, rnd, _data_floor(PA, PB, scale, rnd), wa, wb)
                 if npts + 1 > pts.shape[0]:
                     pts = _room(pts, npts + 1)
                 pts[npts, 0] = t
                 pts[npts, 1] = u
-                pts[npts, 2] = d
-                pts[npts, 3] = k_tangent
-                pts[npts, 4] = 0.0
+                pts[npts, 2] = max(d, 0.0)
+                pts[npts, 3] = k_crossing if d < 0.0 and _crosses(HA, HB, t, u, rnd, wa, wb) else k_tangent
+                pts[npts, 4] = 1.0 if d < 0.0 else 0.0
                 pts[npts, 5] = 0.0
                 npts += 1
             continue
@@ -933,7 +1011,10 @@ def _pair_core(
                 pts[npts, 0] = t
                 pts[npts, 1] = u
                 pts[npts, 2] = d
-                pts[npts, 3] = k_tangent
+                # a double root split by rounding touches; roots of a crossing at an angle no touch
+                # shows, with no gap between them, are one crossing found twice: at an end of a
+                # spline's span, crossing an arc at sin 3.6e-4
+                pts[npts, 3] = k_crossing if _crosses(HA, HB, t, u, rnd, wa, wb) else k_tangent
                 pts[npts, 4] = 1.0
                 pts[npts, 5] = 0.0
                 npts += 1
@@ -979,10 +1060,12 @@ def _pair_core(
                     # else one contact if the curves stay within tol all along between them (a
                     # touch's tangent root 1e-9 from the end where it touches, 3e-7 apart on an
                     # ellipse of size 240)
-                    gap = _gap_between(HA, HB, pts, i, j, wa, wb)
+                    gap = _gap_between(HA, HB, pts[i, 0], pts[i, 1], pts[j, 0], pts[j, 1], wa, wb)
                     same = gap <= tl and not _two_roots(pts, i, j, rnd, gap, _data_floor(PA, PB, scale, rnd),
                                                         k_tangent, k_crossing)
                     noise = True
+                elif not same:
+                    same = _on_flank(HA, HB, pts, i, j, rnd, _data_floor(PA, PB, scale, rnd), wa, wb)
             if same:
                 # the kept point takes the other's kind if it has none, but a crossing root near an
                 # end contact is the rounding noise of a tangent meeting there (see _two_roots): the

@@ -835,3 +835,26 @@ def test_a_spline_through_nine_points_of_a_circle_meets_it_at_each() -> None:
     c = compare(arc, spline)
     assert c.errors == {} and not [d for d in c.disagreements if d.claimant == "occt" and d.verdict.truth == "crossing"
                                    and d.verdict.winner == "occt"], c.disagreements
+
+
+@pytest.mark.parametrize("radius", [1.0, 10.0, 200.0])
+def test_a_spline_fitted_to_an_arc_crosses_it_at_small_angles_and_touches_it_once(radius: float) -> None:
+    """A cubic spline through 9 evenly spaced points of an arc, off it by 4e-5 of the radius between.
+
+    It crosses the arc at the 8 outer points and 4 times between them, at sin 1e-5 to 1e-3, and
+    touches it at the middle point (the spline is symmetric about it): 12 crossings and 1 touch,
+    as OCCT and the exact arbiter say. The kernel called crossings at span ends touches (a root
+    found twice at an end, taken for a double root), and gave the flank of a crossing or of the
+    touch, where the closest-approach iteration stalls 1e-8 to 1e-10 off, as touches, which the
+    post-pass then chained into overlaps 3e-4 to 3e-3 of a span long.
+    """
+    th = 0.3
+    arc = bd.Edge.make_circle(radius, bd.Plane.XY, start_angle=math.degrees(th) - 70,
+                              end_angle=math.degrees(th) + 70)
+    nodes = [th + x for x in np.linspace(-0.5, 0.9, 9)]
+    spline = bd.Edge.make_spline([bd.Vector(radius * math.cos(a), radius * math.sin(a)) for a in nodes])
+    found = api.intersections(arc, spline, tol=1e-7)
+    assert [r.kind for r in found] == ["crossing"] * 6 + ["tangent"] + ["crossing"] * 6, found
+    assert math.dist(found[6].point, (radius * math.cos(nodes[4]), radius * math.sin(nodes[4]), 0.0)) <= 1e-6 * radius
+    c = compare(arc, spline, tol=1e-7)
+    assert c.errors == {} and c.disagreements == [], c.disagreements
