@@ -164,27 +164,48 @@ def _crosses(HA: cython.const[cython.double][:, :], HB: cython.const[cython.doub
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _on_flank(HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :],
+def _flank_of(HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :],
               pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssize_t, rnd: cython.double,
-              floor: cython.double, wa: cython.double[:, :], wb: cython.double[:, :]) -> cython.bint:
-    """True when one of points ``i``, ``j`` is a near-miss touch on the flank of the other contact.
+              floor: cython.double, wa: cython.double[:, :], wb: cython.double[:, :]) -> cython.Py_ssize_t:
+    """Which of points ``i``, ``j`` lies on the flank of the other contact: its index, else -1.
 
-    A cluster's closest approach (a touch found by no root, column 4 ``0``) that a root or an
-    end meeting (a higher column 4) lies within 1e-2 of in both parameters, the curves between
-    them no farther apart than ``max(4 d, floor)`` (``d`` the touch's distance; one contact, as in
-    :func:`_two_roots`), is no local minimum of the distance: the damped iteration of
-    :func:`_closest` stalled on the way down. A spline fitted to an arc touches it at a span's
-    end; the closest approach came out 1e-10 off, 3e-4 in t and 2e-3 in u before it, and a pass
-    that chains touches made an overlap of the two.
+    Such a point is within tol of the other curve only because the curves stay close up to a
+    contact next to it; it is no contact of its own:
+
+    - a cluster's closest approach (a touch found by no root, column 4 ``0``) next to a root or an
+      end meeting: the damped iteration of :func:`_closest` stalled on the way down. A spline
+      fitted to an arc touches it at a span's end; the closest approach came out 1e-10 off, 3e-4
+      in t and 2e-3 in u before it, and a pass that chains touches made an overlap of the two;
+    - an end meeting more than ``floor`` apart (column 4 ``2``) next to a certified root: a nearly
+      straight spline crossing a line at a small angle 9e-3 of a span before the span's end is
+      4.5e-8 off the line there, within tol, and was reported twice (a spline and a copy moved
+      across and turned by 1e-4: 8e-2 of a span before its end).
+
+    Next means within 1e-2 in both parameters (1e-1 for an end meeting: a crossing at a small angle
+    has a long flank), the curves between them no farther apart than ``max(4 d, floor)`` (``d`` the
+    flank point's distance; one contact, as in :func:`_two_roots`). An end meeting within 1e-3 of
+    the root in both is left to the rule of one contact there, which keeps the end: a circle pushed
+    1e-9 through another at its seam is one touch there, not crossings on either side of it.
     """
-    e: cython.Py_ssize_t = i if pts[i, 4] < pts[j, 4] else j
+    e: cython.Py_ssize_t = -1
+    near: cython.double = 1e-2
+    if pts[i, 4] == 0.0 and pts[j, 4] != 0.0 and pts[i, 2] > rnd:
+        e = i
+    elif pts[j, 4] == 0.0 and pts[i, 4] != 0.0 and pts[j, 2] > rnd:
+        e = j
+    elif pts[i, 4] == 2.0 and pts[j, 4] == 1.0 and pts[j, 5] == 1.0 and pts[i, 2] > floor:
+        e = i
+        near = 1e-1
+    elif pts[j, 4] == 2.0 and pts[i, 4] == 1.0 and pts[i, 5] == 1.0 and pts[j, 2] > floor:
+        e = j
+        near = 1e-1
+    dt = abs(pts[i, 0] - pts[j, 0])
+    du = abs(pts[i, 1] - pts[j, 1])
+    if e < 0 or dt > near or du > near or (near == 1e-1 and dt <= 1e-3 and du <= 1e-3):
+        return -1
     r: cython.Py_ssize_t = j if e == i else i
-    if pts[e, 4] != 0.0 or pts[r, 4] == 0.0 or pts[e, 2] <= rnd:
-        return False
-    if abs(pts[i, 0] - pts[j, 0]) > 1e-2 or abs(pts[i, 1] - pts[j, 1]) > 1e-2:
-        return False
     gap = _gap_between(HA, HB, pts[e, 0], pts[e, 1], pts[r, 0], pts[r, 1], wa, wb)
-    return gap <= max(4.0 * pts[e, 2], floor)
+    return e if gap <= max(4.0 * pts[e, 2], floor) else -1
 
 
 @cython.cfunc
@@ -1029,6 +1050,7 @@ def _pair_core(
             keep = np.empty(npts)
     for i in range(npts):
         keep[i] = 1.0
+    floor: cython.double = _data_floor(PA, PB, scale, rnd) if npts > 1 else rnd
     for i in range(npts):
         if not keep[i]:
             continue
@@ -1045,6 +1067,12 @@ def _pair_core(
             elif dt <= 1e-9 and du <= 1e-9:
                 same = True
             else:
+                flank = _flank_of(HA, HB, pts, i, j, rnd, floor, wa, wb)
+                if flank >= 0:  # no contact of its own: dropped, whatever the priorities
+                    keep[flank] = 0.0
+                    if flank == i:
+                        break
+                    continue
                 # one parameter shared: the same point if the curves are point-like between
                 same = (dt <= 1e-9 or du <= 1e-9) and _point_like(HA, HB, pts, i, j, tl, wa, wb)
                 if not same and (
@@ -1061,11 +1089,8 @@ def _pair_core(
                     # touch's tangent root 1e-9 from the end where it touches, 3e-7 apart on an
                     # ellipse of size 240)
                     gap = _gap_between(HA, HB, pts[i, 0], pts[i, 1], pts[j, 0], pts[j, 1], wa, wb)
-                    same = gap <= tl and not _two_roots(pts, i, j, rnd, gap, _data_floor(PA, PB, scale, rnd),
-                                                        k_tangent, k_crossing)
+                    same = gap <= tl and not _two_roots(pts, i, j, rnd, gap, floor, k_tangent, k_crossing)
                     noise = True
-                elif not same:
-                    same = _on_flank(HA, HB, pts, i, j, rnd, _data_floor(PA, PB, scale, rnd), wa, wb)
             if same:
                 # the kept point takes the other's kind if it has none, but a crossing root near an
                 # end contact is the rounding noise of a tangent meeting there (see _two_roots): the

@@ -858,3 +858,35 @@ def test_a_spline_fitted_to_an_arc_crosses_it_at_small_angles_and_touches_it_onc
     assert math.dist(found[6].point, (radius * math.cos(nodes[4]), radius * math.sin(nodes[4]), 0.0)) <= 1e-6 * radius
     c = compare(arc, spline, tol=1e-7)
     assert c.errors == {} and c.disagreements == [], c.disagreements
+
+
+# (workbench fuzz of crossings at small angles) a nearly straight spline and a line; a spline and a
+# copy of it moved across by 7e-7 of its size and turned by 1e-5
+_NEARLY_STRAIGHT = [(-32.02930054679328, -181.913322548597), (-32.01319389570317, -181.92500603806556),
+                    (-31.997093214861234, -181.9366977585871), (-31.980984831785005, -181.9483788602036),
+                    (-31.964878568780556, -181.96006288471756), (-31.948779663571198, -181.97175705326555)]
+_LINE = ((-32.037360785894556, -181.90749033543418), (-31.94071855257864, -181.9775880643706))
+_SPLINE = [(-247.7569705472649, -95.74006665090563), (-247.7452579289973, -95.74845712725035),
+           (-247.73354531072965, -95.7428309447995), (-247.72183269246204, -95.73152100308195),
+           (-247.7101200741944, -95.72914401493445)]
+_MOVED = [(-247.75696975646983, -95.74006730706594), (-247.7452570322639, -95.74845763552496),
+          (-247.73354448503412, -95.74283130518954), (-247.72183200956823, -95.73152121558788),
+          (-247.71011942131366, -95.72914407955555)]
+
+
+@pytest.mark.parametrize("case", ["spline and line", "spline and moved copy"])
+def test_an_end_within_tol_on_the_flank_of_a_small_angle_crossing_is_that_crossing(case: str) -> None:
+    """Crossings at a small angle have a long flank within tol: a span's end (4.5e-8 off the line
+    at a knot 9e-3 of a span past the crossing) or the edge's end (5.7e-8 off, 8e-2 of a span past
+    it) was reported as a second contact. The distance falls all the way from there to the
+    crossing: one contact, as OCCT and the exact arbiter say.
+    """
+    if case == "spline and line":
+        a = bd.Edge.make_spline([bd.Vector(*p) for p in _NEARLY_STRAIGHT])
+        b = bd.Edge.make_line(*_LINE)
+    else:
+        a, b = (bd.Edge.make_spline([bd.Vector(*p) for p in pts]) for pts in (_SPLINE, _MOVED))
+    found = api.intersections(a, b, tol=1e-7)
+    assert all(r.distance <= 1e-12 for r in found), found
+    c = compare(a, b, tol=1e-7)
+    assert c.errors == {} and not [d for d in c.disagreements if d.verdict.winner != "relief_cad"], c.disagreements

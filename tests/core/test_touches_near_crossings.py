@@ -211,3 +211,18 @@ def test_a_spline_fitted_to_an_arc_gives_its_crossings_and_its_touch(a: Rational
     for tol in (1e-9, 1e-7):
         assert kinds(intersect(a, b, tol=tol)) == want, tol
         assert sorted((r.kind, round(r.u, 5)) for r in intersect(b, a, tol=tol)) == sorted(want), tol
+
+
+def test_an_end_within_tol_on_the_flank_of_a_small_angle_crossing_is_that_crossing() -> None:
+    # a piece of a nearly straight spline crosses a line 9e-3 of its range before its end, where it
+    # is 4.5e-8 off the line (within tol 1e-7): the end was a second contact; the distance falls all
+    # the way from it to the crossing, so the crossing is the one contact
+    a = RationalBezier([[-32.01319389570317, -181.92500603806553], [-32.00782693744508, -181.92890318931214],
+                        [-32.00246131652942, -181.93280218330472], [-31.997093214861238, -181.93669775858712]])
+    b = RationalBezier([[-32.037360785894556, -181.90749033543418], [-31.94071855257864, -181.9775880643706]])
+    for tol in (1e-7, 1e-6):
+        assert kinds(intersect(a, b, tol=tol)) == [("crossing", 0.99066)], tol
+        assert [(r.kind, round(r.u, 5)) for r in intersect(b, a, tol=tol)] == [("crossing", 0.99066)], tol
+    # an end meeting as close as rounding stays: the end of a cut at its crossing
+    cut = a.segment(0.0, 0.9906624655754577)
+    assert [r.t for r in intersect(cut, b, tol=1e-7)] == [1.0]
