@@ -250,19 +250,69 @@ def _pair(ha: FloatArray, hb: FloatArray, tol: float, budget: int) -> FloatArray
 
 
 def _pair_in_range(ha: FloatArray, hb: FloatArray, tol: float, budget: int) -> FloatArray:
-    # ψ∘φ = ψ: the span of the relief changes nothing (see intersect_space); the kernel takes 2
-    rows, n, status = space_pair_kernel(ha, hb, tol, budget, 2.0)
-    if status == STATUS_ARTEFACT:
-        flat = _coplanar_rows(ha, hb, tol, budget)
-        if flat is not None:
-            return flat
+    rows = _separated(ha, hb, tol, budget, 0)
+    if rows is None:
         raise BudgetExceededError(
             "every projection frame showed an overlap of the projected curves that is not an overlap "
-            "in space (both curves on one cone through each centre tried); they could not be separated",
+            f"in space (both curves on one cone through each centre tried), in halves of the curves "
+            f"too, {_SPLIT_DEPTH} times over; they could not be separated",
             partial=IntersectionList([]), unresolved=[ParameterBox(0.0, 1.0, 0.0, 1.0)],
         )
-    out: FloatArray = rows[:n]
-    return out
+    return rows
+
+
+_SPLIT_DEPTH = 6  # halvings of both curves, at most, of a pair that every frame shows as an artefact
+
+
+def _separated(ha: FloatArray, hb: FloatArray, tol: float, budget: int, depth: int) -> FloatArray | None:
+    """The space rows of a pair, from the halves of both curves where every frame shows an artefact.
+
+    Curves that stay within tol of each other along part of their length only (a space curve and
+    a copy turned by 1e-6 about a line through one of its points) project, in every frame, to
+    images overlapping beyond where the curves do. Halving both curves (up to
+    :data:`_SPLIT_DEPTH` times) separates the stretch within tol from the rest; the rows of the
+    halves are mapped back to the pair's parameters. None when a part still cannot be separated.
+    """
+    # ψ∘φ = ψ: the span of the relief changes nothing (see intersect_space); the kernel takes 2
+    rows, n, status = space_pair_kernel(ha, hb, tol, budget, 2.0)
+    if status != STATUS_ARTEFACT:
+        out: FloatArray = rows[:n]
+        return out
+    flat = _coplanar_rows(ha, hb, tol, budget)
+    if flat is not None or depth >= _SPLIT_DEPTH:
+        return flat
+    parts = []
+    halves_b = [h.homogeneous for h in RationalBezier._trusted(hb).split(0.5)]
+    for ka, part_a in enumerate(RationalBezier._trusted(ha).split(0.5)):
+        for kb, part_b in enumerate(halves_b):
+            sub = _separated(part_a.homogeneous, part_b, tol, budget, depth + 1)
+            if sub is None:
+                return None
+            sub = sub.copy()
+            sub[:, [1, 3]] = 0.5 * (ka + sub[:, [1, 3]])  # t, t1 (an overlap's or a box's)
+            sub[:, [2, 4]] = 0.5 * (kb + sub[:, [2, 4]])  # u, u1
+            parts.append(sub)
+    return _joined_halves(np.vstack(parts))
+
+
+def _joined_halves(rows: FloatArray) -> FloatArray:
+    """Rows of the halves of a pair as one: a point found by two halves once, abutting overlaps joined."""
+    points = [r for r in rows.tolist() if r[0] != KIND_OVERLAP]
+    overlaps = sorted((r for r in rows.tolist() if r[0] == KIND_OVERLAP), key=lambda r: r[1])
+    kept: list[list[float]] = []
+    for r in points:
+        if r[0] == KIND_UNRESOLVED or not any(q[0] != KIND_UNRESOLVED and q[1] == r[1] and q[2] == r[2]
+                                                for q in kept):
+            kept.append(r)
+    joined: list[list[float]] = []
+    for r in overlaps:
+        if joined and joined[-1][3] == r[1] and joined[-1][4] == r[2]:
+            joined[-1][3:5] = r[3:5]
+        else:
+            joined.append(r)
+    out = [r for r in kept if not any(o[1] <= r[1] <= o[3] and min(o[2], o[4]) <= r[2] <= max(o[2], o[4])
+                                      for o in joined)]
+    return np.array(out + joined, dtype=np.float64).reshape(-1, SPACE_COLS)
 
 
 def _coplanar_rows(ha: FloatArray, hb: FloatArray, tol: float, budget: int) -> FloatArray | None:
@@ -405,7 +455,7 @@ def intersect_space(
         :data:`relief_cad.tolerances.MAX_TOLERANCE_FRACTION` of the curves' size.
     BudgetExceededError
         If a budget runs out (``on_budget="raise"``), or no frame gives a projection free of
-        artefacts.
+        artefacts, for the curves nor for their halves (:data:`_SPLIT_DEPTH` times over).
 
     Examples
     --------

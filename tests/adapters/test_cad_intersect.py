@@ -18,6 +18,7 @@ from OCP.BRepAlgoAPI import BRepAlgoAPI_Splitter
 from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakePolygon
 from OCP.GCPnts import GCPnts_AbscissaPoint
 from OCP.Geom import Geom_BezierCurve, Geom_BSplineCurve
+from OCP.GeomAPI import GeomAPI_ProjectPointOnCurve
 from OCP.gp import gp_Ax1, gp_Ax2, gp_Circ, gp_Dir, gp_Elips, gp_Pnt, gp_Trsf, gp_Vec
 from OCP.TopLoc import TopLoc_Location
 from OCP.TopoDS import TopoDS_Edge, TopoDS_Vertex
@@ -890,3 +891,22 @@ def test_an_end_within_tol_on_the_flank_of_a_small_angle_crossing_is_that_crossi
     assert all(r.distance <= 1e-12 for r in found), found
     c = compare(a, b, tol=1e-7)
     assert c.errors == {} and not [d for d in c.disagreements if d.verdict.winner != "relief_cad"], c.disagreements
+
+
+def test_a_space_spline_and_a_copy_turned_by_1e_7_about_one_of_its_points_are_separated() -> None:
+    """The copy stays within tol (1e-7) of the spline for half its length around the point, and
+    every projection frame showed the curves' images overlapping beyond where the curves do: the
+    pair raised BudgetExceededError ("could not be separated"). Halves of the pieces separate it.
+    """
+    pts = [bd.Vector(0, 0, 0), bd.Vector(1, 0.2, -0.1), bd.Vector(2, -0.25, 0.2), bd.Vector(3, 0.1, 0.05),
+           bd.Vector(4, 0.3, -0.2)]
+    a = bd.Edge.make_spline(pts)
+    p = a.position_at(0.37)
+    b = bd.Edge.make_spline(pts).rotate(bd.Axis(p, (0.3, -0.5, 0.8)), math.degrees(1e-7))
+    found = api.intersections(a, b, tol=1e-7)
+    curve = BRep_Tool.Curve_s(a.wrapped, 0.0, 1.0)
+    t_p = GeomAPI_ProjectPointOnCurve(gp_Pnt(p.X, p.Y, p.Z), curve).LowerDistanceParameter()
+    assert [r.kind for r in found] == ["overlap"] and found[0].t[0] < t_p < found[0].t[1], found
+    for t in np.linspace(found[0].t[0], found[0].t[1], 9)[1:-1]:  # a stretch within tol of b
+        q = ocp.edge_value(a.wrapped, float(t))
+        assert GeomAPI_ProjectPointOnCurve(gp_Pnt(*q), BRep_Tool.Curve_s(b.wrapped, 0.0, 1.0)).LowerDistance() <= 1e-7
