@@ -188,20 +188,21 @@ def _flank_of(HA: cython.const[cython.double][:, :], HB: cython.const[cython.dou
     1e-9 through another at its seam is one touch there, not crossings on either side of it.
     """
     e: cython.Py_ssize_t = -1
-    near: cython.double = 1e-2
+    end: cython.bint = False  # an end meeting next to a root (else a closest approach)
     if pts[i, 4] == 0.0 and pts[j, 4] != 0.0 and pts[i, 2] > rnd:
         e = i
     elif pts[j, 4] == 0.0 and pts[i, 4] != 0.0 and pts[j, 2] > rnd:
         e = j
     elif pts[i, 4] == 2.0 and pts[j, 4] == 1.0 and pts[j, 5] == 1.0 and pts[i, 2] > floor:
         e = i
-        near = 1e-1
+        end = True
     elif pts[j, 4] == 2.0 and pts[i, 4] == 1.0 and pts[i, 5] == 1.0 and pts[j, 2] > floor:
         e = j
-        near = 1e-1
+        end = True
+    near: cython.double = 1e-1 if end else 1e-2
     dt = abs(pts[i, 0] - pts[j, 0])
     du = abs(pts[i, 1] - pts[j, 1])
-    if e < 0 or dt > near or du > near or (near == 1e-1 and dt <= 1e-3 and du <= 1e-3):
+    if e < 0 or dt > near or du > near or (end and dt <= 1e-3 and du <= 1e-3):
         return -1
     r: cython.Py_ssize_t = j if e == i else i
     gap = _gap_between(HA, HB, pts[e, 0], pts[e, 1], pts[r, 0], pts[r, 1], wa, wb)
