@@ -585,8 +585,9 @@ def _match_side(
         ) -> PointCheck:
             if (side, k) not in refined:
                 chk = arbitrate_point(ca, cb, res.t, res.u, tol=tol)
-                if ca is cb and abs(chk.t - chk.u) <= 1e-9 * (ca.last - ca.first):
-                    # a double point of one edge that collapsed onto t == u: not a double point
+                if ca is cb and _one_point_of(ca, chk.t, chk.u, tol):
+                    # a double point of one edge that collapsed onto t == u, or the closing point
+                    # of a closed edge (its seam, at both ends of its range): not a double point
                     chk = dataclasses.replace(chk, holds=False, kind="miss", distance=math.inf)
                 refined[(side, k)] = chk
             return refined[(side, k)]
@@ -639,7 +640,9 @@ def _match_side(
                 if k in used_m:
                     continue
                 counter: tuple[EdgeResult, ...]
-                if isinstance(claim, EdgeOverlap):
+                if isinstance(claim, EdgeOverlap) and ca is cb and _one_stretch(claim, pad_a):
+                    counter, verdict = (), _one_stretch_verdict(claim, other)
+                elif isinstance(claim, EdgeOverlap):
                     counter, verdict = _judge_overlap(ca, cb, claim, theirs, pad_a, tol, side, other)
                 else:
                     counter = tuple(
@@ -651,6 +654,45 @@ def _match_side(
                     verdict = _judge_point(check, claim, mine, theirs, k, tol, side, other, ca, cb)
                 disagreements.append(Disagreement(side, claim, counter, verdict))
     return agreed, disagreements
+
+
+def _one_point_of(c: ExactCurve, t: float, u: float, tol: float) -> bool:
+    """True when parameters ``t`` and ``u`` of one edge are one point of it, not a double point.
+
+    The same parameter (to 1e-9 of the range), or the closing point of a closed edge: ``u`` one
+    period from ``t`` on a periodic one, or ``t`` and ``u`` at its two ends where they meet
+    within ``tol``.
+
+    >>> import build123d as bd
+    >>> circle = ExactCurve(bd.Edge.make_circle(1.0))
+    >>> _one_point_of(circle, 1e-14, 2 * math.pi, 1e-7), _one_point_of(circle, 0.0, math.pi, 1e-7)
+    (True, False)
+    """
+    span = c.last - c.first
+    if abs(c.near(u, t) - t) <= 1e-9 * span:
+        return True
+    ends = sorted((t, u))
+    if abs(ends[0] - c.first) > 1e-9 * span or abs(ends[1] - c.last) > 1e-9 * span:
+        return False
+    return _pt_dist([float(x) for x in c.value(c.first)], [float(x) for x in c.value(c.last)]) <= tol
+
+
+def _one_stretch(claim: EdgeOverlap, pad: float) -> bool:
+    """True when a self-overlap claim's two ranges share their inside: the edge against itself.
+
+    OCCT's self-intersection of one spline gave ``t (0.59089, 0.59181)`` against ``u (0.59089,
+    0.61593)``; the arbiter found the edge on itself there and judged it a true overlap. A real
+    self-overlap (a stretch run twice) has ranges that meet at most at an end (a fold).
+    """
+    lo, hi = min(claim.u), max(claim.u)
+    return min(claim.t[1], hi) - max(claim.t[0], lo) > pad
+
+
+def _one_stretch_verdict(claim: EdgeOverlap, other: Side) -> Verdict:
+    """The verdict on a self-overlap claim whose ranges are one stretch (:func:`_one_stretch`)."""
+    return Verdict(other, "nothing", f"not a self-overlap: its ranges t {claim.t[0]:.6g} .. {claim.t[1]:.6g} "
+                   f"and u {min(claim.u):.6g} .. {max(claim.u):.6g} share their inside, one stretch of the "
+                   "edge, where it only meets itself", 0.0)
 
 
 def _coincide_around(ca: ExactCurve, cb: ExactCurve, check: PointCheck, tol: float) -> bool:
