@@ -249,6 +249,25 @@ def _closest_u(ca: ExactCurve, cb: ExactCurve, t: Any, u0: Any) -> tuple[Any, An
     return u, mp.sqrt(sum((pa[k] - pb[k]) ** 2 for k in range(3)))
 
 
+def _sampled(ca: ExactCurve, cb: ExactCurve, ts: list[Any],
+             guesses: list[Any]) -> tuple[list[Any], list[Any]]:
+    """The closest parameters of ``b`` to ``a`` at ``ts`` (from ``guesses``) and their distances.
+
+    On one edge (a self-overlap claim) the search may slide from the other stretch onto the point
+    itself: a distance 0 that says nothing. Such a sample, whose guess was away from ``t``, is
+    given an infinite distance (the claim does not hold there).
+    """
+    span = ca.last - ca.first
+    us, dists = [], []
+    for ti, guess in zip(ts, guesses, strict=True):
+        ui, di = _closest_u(ca, cb, ti, guess)
+        if ca is cb and abs(ui - ti) <= 1e-6 * span < abs(guess - ti):
+            di = ca.mp.inf
+        us.append(ui)
+        dists.append(di)
+    return us, dists
+
+
 def _rounding(ca: ExactCurve, cb: ExactCurve, tol: float) -> float:
     """The rounding level of the data: ``1e-3 tol`` or ``1e-13`` of the curves' size, the larger."""
     return max(1e-3 * tol, 1e-13 * max(ca.size, cb.size))
@@ -338,11 +357,7 @@ def arbitrate_overlap(
         t0, t1 = mp.mpf(t[0]), mp.mpf(t[1])
         u0, u1 = mp.mpf(u[0]), mp.mpf(u[1])
         ts = [t0 + (t1 - t0) * mp.mpf(i) / (samples - 1) for i in range(samples)]
-        dists, us = [], []
-        for i, ti in enumerate(ts):
-            ui, di = _closest_u(ca, cb, ti, u0 + (u1 - u0) * mp.mpf(i) / (samples - 1))
-            us.append(ui)
-            dists.append(di)
+        us, dists = _sampled(ca, cb, ts, [u0 + (u1 - u0) * mp.mpf(i) / (samples - 1) for i in range(samples)])
         dmax = float(max(dists))
         rounding = _rounding(ca, cb, tol)
         if dmax <= rounding:
@@ -357,11 +372,12 @@ def arbitrate_overlap(
         ]
         # the deepest few (a flat, noisy distance profile has many shallow ones)
         for i in sorted(minima, key=lambda j: dists[j])[:6]:
-            if True:
-                rt, ru, dist = _refine(ca, cb, ts[i], us[i])
-                check = _point_check(ca, cb, rt, ru, dist, tol)
-                if check.holds and not any(abs(check.t - f.t) <= 1e-9 * (1 + abs(f.t)) for f in found):
-                    found.append(check)
+            rt, ru, dist = _refine(ca, cb, ts[i], us[i])
+            check = _point_check(ca, cb, rt, ru, dist, tol)
+            if ca is cb and abs(check.t - check.u) <= 1e-9 * (ca.last - ca.first):
+                continue  # one edge at one parameter: no double point
+            if check.holds and not any(abs(check.t - f.t) <= 1e-9 * (1 + abs(f.t)) for f in found):
+                found.append(check)
         if dmax <= tol:
             dmin = min(f.distance for f in found) if found else float(min(dists))
             deep = dmin * 10 < dmax and (dmin <= rounding or dmin * 1e3 < tol)

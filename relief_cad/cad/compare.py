@@ -501,6 +501,17 @@ def _in_range(x: float, rng: tuple[float, float], pad: float) -> bool:
     return lo - pad <= x <= hi + pad
 
 
+def _on_claim(p: EdgeIntersection, o: EdgeOverlap, ca: ExactCurve, cb: ExactCurve, pad: float) -> bool:
+    """True when point ``p`` bears on overlap claim ``o``: its ``t`` in ``o``'s range (``pad`` of slack).
+
+    On one edge (self-intersections) its ``u`` must lie in ``o``'s too: a double point at that
+    ``t`` with another stretch of the edge says nothing of a self-overlap claimed there.
+    """
+    if not _in_range(p.t, o.t, pad):
+        return False
+    return ca is not cb or _in_range(cb.near(p.u, 0.5 * (o.u[0] + o.u[1])), o.u, pad)
+
+
 def _merge_overlaps(results: list[EdgeResult], pad: float) -> list[EdgeResult]:
     """Join one side's overlaps whose ``t`` ranges meet (OCCT sometimes fragments one overlap)."""
     ovs = sorted((r for r in results if isinstance(r, EdgeOverlap)), key=lambda r: r.t[0])
@@ -646,7 +657,7 @@ def _match_side(
                     counter, verdict = _judge_overlap(ca, cb, claim, theirs, pad_a, tol, side, other)
                 else:
                     counter = tuple(
-                        x for x in theirs if isinstance(x, EdgeOverlap) and _in_range(claim.t, x.t, pad_a)
+                        x for x in theirs if isinstance(x, EdgeOverlap) and _on_claim(claim, x, ca, cb, pad_a)
                     )
                     if counter:
                         continue  # judged from the overlap's side
@@ -862,7 +873,7 @@ def _judge_overlap(
     tangency (OCCT gives one contact as two abutting overlaps) may lie just outside it.
     """
     counter: tuple[EdgeResult, ...] = tuple(
-        x for x in theirs if isinstance(x, EdgeIntersection) and _in_range(x.t, claim.t, pad))
+        x for x in theirs if isinstance(x, EdgeIntersection) and _on_claim(x, claim, ca, cb, pad))
     chk = arbitrate_overlap(ca, cb, claim.t, claim.u, tol=tol)
     if chk.holds:
         return counter, Verdict(

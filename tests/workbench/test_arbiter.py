@@ -308,12 +308,20 @@ _OPEN = [(0.09853126064508397, -0.03174151361053555), (0.036169869512497274, 0.0
          (-0.040487214377102225, 0.04086274476598389), (-0.03421949837763436, 0.001098120567075702),
          (-0.0018562436737994514, 0.13617636064527985)]
 
+# a periodic spline crossing itself, whose "self-overlap" from OCCT runs t 149.9 .. 178.9 against
+# u 179.7 .. 178.9: the overlap check's closest points slid onto t itself (distance 0)
+_LOOPED = [(118.12406110373205, 109.07867801166947), (47.65913854376542, 59.59629496523588),
+           (78.2707207419143, 0.523651058917675), (-110.08454821130206, 110.79141829253851),
+           (-87.5892771648452, 87.50792174043987), (36.81370743996862, -39.03687810776028),
+           (-88.03248329614624, -116.43443282580377)]
 
-@pytest.mark.parametrize("periodic", [True, False])
-def test_a_closing_point_or_a_stretch_against_itself_is_no_self_intersection(periodic: bool) -> None:
+
+@pytest.mark.parametrize(("pts", "periodic"), [(_CLOSED, True), (_OPEN, False), (_LOOPED, True)],
+                         ids=["closing-point", "one-stretch", "meeting-at-one-end"])
+def test_a_closing_point_or_a_stretch_against_itself_is_no_self_intersection(pts: list, periodic: bool) -> None:
     import build123d as bd
 
-    edge = bd.Edge.make_spline([bd.Vector(*p) for p in (_CLOSED if periodic else _OPEN)], periodic=periodic)
+    edge = bd.Edge.make_spline([bd.Vector(*p) for p in pts], periodic=periodic)
     c = compare(edge)
     assert c.errors == {}
     claims = [d for d in c.disagreements if d.claimant == "occt"]
