@@ -874,8 +874,16 @@ _MOVED = [(-247.75696975646983, -95.74006730706594), (-247.7452570322639, -95.74
           (-247.73354448503412, -95.74283130518954), (-247.72183200956823, -95.73152121558788),
           (-247.71011942131366, -95.72914407955555)]
 
+# a nearly straight spline (wiggle 4e-6 of its length) and a line: it crosses 0.16 of a span past a
+# knot, where it is 8.4e-8 off the line
+_STRAIGHTER = [(0.09167337517639439, 0.1496076886667778), (0.08836051087167043, 0.1506178917044023),
+               (0.0850478183400201, 0.1516286578921775), (0.08173480547730157, 0.15263837388922424),
+               (0.07842237629939373, 0.15365000347017635), (0.07510936181310746, 0.15465971414443067),
+               (0.07179655330218339, 0.15567010009947144), (0.0684836531228685, 0.1566801855238935)]
+_ITS_LINE = ((0.09399226583321985, 0.14890017162795688), (0.06616489202788306, 0.15738812732526997))
 
-@pytest.mark.parametrize("case", ["spline and line", "spline and moved copy"])
+
+@pytest.mark.parametrize("case", ["spline and line", "spline and moved copy", "knot a span from the crossing"])
 def test_an_end_within_tol_on_the_flank_of_a_small_angle_crossing_is_that_crossing(case: str) -> None:
     """Crossings at a small angle have a long flank within tol: a span's end (4.5e-8 off the line
     at a knot 9e-3 of a span past the crossing) or the edge's end (5.7e-8 off, 8e-2 of a span past
@@ -885,6 +893,9 @@ def test_an_end_within_tol_on_the_flank_of_a_small_angle_crossing_is_that_crossi
     if case == "spline and line":
         a = bd.Edge.make_spline([bd.Vector(*p) for p in _NEARLY_STRAIGHT])
         b = bd.Edge.make_line(*_LINE)
+    elif case == "knot a span from the crossing":
+        a = bd.Edge.make_spline([bd.Vector(*p) for p in _STRAIGHTER])
+        b = bd.Edge.make_line(*_ITS_LINE)
     else:
         a, b = (bd.Edge.make_spline([bd.Vector(*p) for p in pts]) for pts in (_SPLINE, _MOVED))
     found = api.intersections(a, b, tol=1e-7)
