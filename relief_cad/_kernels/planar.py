@@ -69,6 +69,20 @@ def _in_overlap(
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+@cython.inline
+def _one_contact(gap: cython.double, d: cython.double, floor: cython.double) -> cython.bint:
+    """True when a contact ``d`` apart and another, the curves at most ``gap`` apart between, are one.
+
+    The rounding noise of a contact parts the curves by no more than its own distance; between
+    two contacts the curves must part by more than the data's rounding (``floor``) and 4 times
+    that for them to be two.
+    """
+    return gap <= max(4.0 * d, floor)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _two_roots(pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssize_t, rnd: cython.double,
                gap: cython.double, floor: cython.double, k_tangent: cython.double,
                k_crossing: cython.double) -> cython.bint:
@@ -91,7 +105,7 @@ def _two_roots(pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssiz
     if (pts[e, 4] == 2.0 and pts[e, 2] <= rnd and abs(pts[i, 0] - pts[j, 0]) > 1e-4
             and abs(pts[i, 1] - pts[j, 1]) > 1e-4):
         return True
-    return gap > max(4.0 * pts[e, 2], floor)
+    return not _one_contact(gap, pts[e, 2], floor)
 
 
 @cython.cfunc
@@ -131,7 +145,7 @@ def _flank_root(HA: cython.const[cython.double][:, :], HB: cython.const[cython.d
     if d <= rnd:
         return t, u, -1.0
     t2, u2, r2 = _newton(HA, HB, t, u, wa, wb, 60)
-    if r2 > rnd or _gap_between(HA, HB, t, u, t2, u2, wa, wb) > max(4.0 * d, floor):
+    if r2 > rnd or not _one_contact(_gap_between(HA, HB, t, u, t2, u2, wa, wb), d, floor):
         return t, u, d
     return t2, u2, -1.0
 
@@ -206,7 +220,7 @@ def _flank_of(HA: cython.const[cython.double][:, :], HB: cython.const[cython.dou
         return -1
     r: cython.Py_ssize_t = j if e == i else i
     gap = _gap_between(HA, HB, pts[e, 0], pts[e, 1], pts[r, 0], pts[r, 1], wa, wb)
-    return e if gap <= max(4.0 * pts[e, 2], floor) else -1
+    return e if _one_contact(gap, pts[e, 2], floor) else -1
 
 
 @cython.cfunc
@@ -790,6 +804,7 @@ def _pair_core(
 
     if ncand == 0 and nend == 0 and nunres == 0:
         return nres  # nothing found (no ends, hence no overlaps): no cluster arrays to make
+    floor: cython.double = _data_floor(PA, PB, scale, rnd)  # the rounding of the data, in the frame
 
     # ---------------------------------------------------------------- clusters
     # union-find labels, held as doubles (exact integers) in the scratch buffer
@@ -946,7 +961,7 @@ def _pair_core(
         if nroots == 0:
             t, u, d = _closest(HA, HB, bt, bu, wa, wb, 60)
             if d <= tl:
-                t, u, d = _flank_root(HA, HB, t, u, d, rnd, _data_floor(PA, PB, scale, rnd), wa, wb)
+                t, u, d = _flank_root(HA, HB, t, u, d, rnd, floor, wa, wb)
                 if npts + 1 > pts.shape[0]:
                     pts = _room(pts, npts + 1)
                 pts[npts, 0] = t
@@ -1051,7 +1066,6 @@ def _pair_core(
             keep = np.empty(npts)
     for i in range(npts):
         keep[i] = 1.0
-    floor: cython.double = _data_floor(PA, PB, scale, rnd) if npts > 1 else rnd
     for i in range(npts):
         if not keep[i]:
             continue
