@@ -66,7 +66,6 @@ import gc
 import math
 from collections.abc import Iterable, Sequence
 from concurrent.futures import ThreadPoolExecutor
-from typing import Literal
 
 import numpy as np
 from numpy.typing import NDArray
@@ -82,13 +81,11 @@ from ._checks import (
     check_workers,
 )
 from ._kernels import (
-    KIND_CROSSING,
-    KIND_OVERLAP,
-    KIND_TANGENT,
     ends_match,
     intersect_batch_kernel,
     intersect_one_kernel,
 )
+from ._kernels.rows import distribute, rows_to_list
 from ._types import FloatArray
 from .contacts import needs_refining, refine_contacts, refine_self, self_overlaps, whole_overlap
 from .curves import RationalBezier
@@ -118,52 +115,6 @@ __all__ = [
 
 
 
-_NEW = object.__new__
-_KIND_NAMES: tuple[Literal["crossing"], Literal["tangent"]] = ("crossing", "tangent")  # by kind code
-
-
-def _distribute(rows: FloatArray, items: list[list[Result]], boxes: list[list[ParameterBox]]) -> None:
-    """Append the result object of each kernel row, in order, to its pair's list (column 0).
-
-    The one place where rows become :class:`Intersection`, :class:`Overlap` and
-    :class:`ParameterBox` objects; points are built without the frozen-dataclass ``__init__`` cost
-    (the hot loop of every call), their coordinates read-only views of the rows.
-    """
-    points = rows[:, 6:8]  # a view of ``rows`` (the kernel's own new array) made read-only
-    points.setflags(write=False)
-    new = _NEW
-    for i, r in enumerate(rows.tolist()):
-        kind = int(r[1])
-        if kind == KIND_CROSSING or kind == KIND_TANGENT:
-            obj = new(Intersection)
-            d = obj.__dict__
-            d["t"] = r[2]
-            d["u"] = r[3]
-            d["point"] = points[i]
-            d["kind"] = _KIND_NAMES[kind]
-            d["distance"] = r[8]
-            items[int(r[0])].append(obj)
-        elif kind == KIND_OVERLAP:
-            items[int(r[0])].append(Overlap(t=(r[2], r[4]), u=(r[3], r[5])))
-        else:
-            boxes[int(r[0])].append(ParameterBox(r[2], r[4], r[3], r[5]))
-
-
-def _rows_to_list(rows: FloatArray, tol: float = math.nan) -> IntersectionList:
-    """Build the :class:`IntersectionList` of one pair's kernel result rows (``tol_used`` ``tol``).
-
-    The kernel gives a pair's points and overlaps in the order of their ``t`` (a point's ``t``, an
-    overlap's first ``t``; stable), then its unresolved boxes: the order of the list.
-    """
-    n = rows.shape[0]
-    if n == 0:
-        return IntersectionList((), (), tol)
-    items: list[Result] = []
-    boxes: list[ParameterBox] = []
-    _distribute(rows, [items], [boxes])
-    return IntersectionList(items, boxes, tol)
-
-
 def _ro(arr: FloatArray) -> FloatArray:
     """A read-only C-contiguous float64 array (the one array type the kernels are compiled for)."""
     if arr.flags.writeable or not arr.flags.c_contiguous or arr.dtype != np.float64:
@@ -175,7 +126,7 @@ def _ro(arr: FloatArray) -> FloatArray:
 def _planar(pa: FloatArray, wa: FloatArray, pb: FloatArray, wb: FloatArray, tol: float,
             budget: int) -> IntersectionList:
     """Run the pair kernel on arrays made read-only C float64 first."""
-    return _rows_to_list(intersect_one_kernel(_ro(pa), _ro(wa), _ro(pb), _ro(wb), tol, budget))
+    return rows_to_list(intersect_one_kernel(_ro(pa), _ro(wa), _ro(pb), _ro(wb), tol, budget), tol)
 
 
 def _may_coincide(pa: FloatArray, pb: FloatArray, tol: float | None) -> bool:
@@ -390,7 +341,7 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
         if whole is not None:
             return IntersectionList([whole], tol_used=ftol)
         rows = intersect_one_kernel(va, wa, vb, wb, ftol, nbudget)
-    res = _rows_to_list(rows, ftol)
+    res = rows_to_list(rows, ftol)
     if res.unresolved or needs_refining(a, b, res):
         res = finish(_with_tol(_refined(a, b, res, ftol), ftol), on_budget)
     return res
@@ -512,7 +463,7 @@ def _planar_batch(pairs: list[tuple[RationalBezier, RationalBezier]], tols: Floa
         rows = intersect_batch_kernel(pts, wts, offsets, idx[start:stop], tols[start:stop], budget)
         items: list[list[Result]] = [[] for _ in range(start, stop)]
         boxes: list[list[ParameterBox]] = [[] for _ in range(start, stop)]
-        _distribute(rows, items, boxes)  # by pair, each by t (the kernel's order)
+        distribute(rows, items, boxes, True)  # by pair, each by t (the kernel's order)
         for j in range(stop - start):
             k = start + j
             listed = IntersectionList(items[j], boxes[j], used[k])

@@ -56,18 +56,18 @@ from ._kernels import (
     space_pair_rows,
 )
 from ._kernels.bezier import max_abs
+from ._kernels.rows import space_results
 from ._types import FloatArray
 from .contacts import needs_refining, range_exponent, refine_contacts, refine_self, whole_overlap
 from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError
 from .pieces import monotone_pieces
 from .relief import ReliefPerspective, central_projection
-from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
+from .results import Intersection, IntersectionList, ParameterBox, Result, finish
 from .tolerances import _sampled_tolerance, is_point_like, resolve_tolerance
 
 __all__ = ["ReliefFrame", "ReliefScheme", "intersect_space", "relief_scheme"]
 
-_KIND_NAMES: dict[int, Literal["crossing", "tangent"]] = {0: "crossing", 1: "tangent"}
 
 
 @dataclass(frozen=True)
@@ -217,20 +217,6 @@ def relief_scheme(
 
 
 # ---------------------------------------------------------------------------- driver
-def _rows_to_results(rows: FloatArray) -> tuple[list[Result], list[ParameterBox]]:
-    items: list[Result] = []
-    boxes: list[ParameterBox] = []
-    for r in rows.tolist():
-        kind = int(r[0])
-        if kind == KIND_OVERLAP:
-            items.append(Overlap(t=(r[1], r[3]), u=(r[2], r[4])))
-        elif kind == KIND_UNRESOLVED:
-            boxes.append(ParameterBox(r[1], r[3], r[2], r[4]))
-        else:
-            items.append(Intersection(r[1], r[2], np.array(r[5:8]), _KIND_NAMES[kind], r[8]))
-    return items, boxes
-
-
 def _pair(ha: FloatArray, hb: FloatArray, tol: float, budget: int) -> FloatArray:
     """The space kernel on one pair (homogeneous rows), scaled by a power of two when needed.
 
@@ -481,7 +467,7 @@ def intersect_space(
     given = check_tol(tol)
     if b is None:
         tol_s = resolve_tolerance(given, a3)
-        items, boxes = _rows_to_results(_self_rows(a3, tol_s, nbudget))
+        items, boxes = space_results(_self_rows(a3, tol_s, nbudget))
         return _finished(refine_self(a3, items, tol_s), boxes, tol_s, on_budget)
     return space_pair(a3, b, given, nbudget, on_budget)
 
@@ -509,7 +495,7 @@ def space_pair(a: RationalBezier, b: RationalBezier, tol: float | None, budget: 
         rows = _pair(ha, hb, tol_s, budget)
     if rows.shape[0] == 0:  # most pairs: nothing to build, sort or check
         return IntersectionList((), (), tol_s)
-    items, boxes = _rows_to_results(rows)
+    items, boxes = space_results(rows)
     if needs_refining(a, b, items):
         items = refine_contacts(a, b, items, tol_s)
     return _finished(items, boxes, tol_s, on_budget)

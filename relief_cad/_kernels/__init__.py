@@ -14,7 +14,8 @@ Modules, by concept:
 - :mod:`~relief_cad._kernels.certify`: double-double arithmetic and the certified polish;
 - :mod:`~relief_cad._kernels.planar`: the planar pair driver;
 - :mod:`~relief_cad._kernels.batch`: many pairs in one call;
-- :mod:`~relief_cad._kernels.space`: the relief frame, φ, ψ, the depth check and the space driver.
+- :mod:`~relief_cad._kernels.space`: the relief frame, φ, ψ, the depth check and the space driver;
+- :mod:`~relief_cad._kernels.rows`: result rows to result objects (with the GIL; the one such place).
 
 Uncompiled switch
 -----------------
@@ -66,7 +67,7 @@ __all__ = [
 ]
 
 #: the compiled modules, in dependency order (``constants`` is plain Python, never compiled)
-KERNEL_MODULES: tuple[str, ...] = ("bezier", "clip", "certify", "polish", "planar", "batch", "space")
+KERNEL_MODULES: tuple[str, ...] = ("bezier", "clip", "certify", "polish", "planar", "batch", "space", "rows")
 
 PURE_ENV = "RELIEF_CAD_PURE"
 

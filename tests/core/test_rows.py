@@ -1,0 +1,76 @@
+"""Kernel rows to result objects (relief_cad._kernels.rows): the one place, for planar and space rows."""
+
+from __future__ import annotations
+
+import dataclasses
+import doctest
+
+import numpy as np
+import pytest
+
+import relief_cad._kernels.rows as rows_module
+from relief_cad import RationalBezier, intersect, intersect_many
+from relief_cad.results import Intersection, IntersectionList, Overlap, ParameterBox
+
+
+def test_the_compiled_module_runs_its_own_examples() -> None:
+    result = doctest.testmod(rows_module)
+    assert result.attempted >= 5 and result.failed == 0
+
+
+def _fields(r: object) -> tuple[object, ...]:
+    return tuple(np.asarray(v).tolist() if isinstance(v, np.ndarray) else v for v in dataclasses.astuple(r))
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_points_are_plain_floats_and_read_only_and_equal_hand_built_ones(dim: int) -> None:
+    pad = [[0.0]] * 3 if dim == 3 else [[]] * 3
+    a = RationalBezier(np.hstack([[[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]], pad]))
+    b = RationalBezier(np.hstack([[[0.0, 1.0], [1.0, 0.0], [2.0, 1.0]], pad]))
+    res = intersect(a, b)
+    assert isinstance(res, IntersectionList) and len(res) == 2 and res.complete
+    for r in res:
+        assert type(r) is Intersection
+        assert type(r.t) is float and type(r.u) is float and type(r.distance) is float
+        assert r.point.shape == (dim,) and not r.point.flags.writeable
+        with pytest.raises(ValueError):
+            r.point[0] = 1.0
+        with pytest.raises(dataclasses.FrozenInstanceError):
+            r.t = 0.0  # type: ignore[misc]
+        hand = Intersection(r.t, r.u, np.array(r.point), r.kind, r.distance)
+        assert _fields(hand) == _fields(r) and repr(hand) == repr(r)
+        assert np.allclose(r.point, a(r.t), atol=1e-12) and np.allclose(r.point, b(r.u), atol=1e-12)
+    assert [r.t for r in res] == sorted(r.t for r in res)
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_overlaps_equal_and_hash_as_hand_built_ones(dim: int) -> None:
+    a = RationalBezier([[0.0, 0.0, 0.0][:dim], [4.0, 0.0, 0.0][:dim]])
+    b = RationalBezier([[3.0, 0.0, 0.0][:dim], [1.0, 0.0, 0.0][:dim]])
+    (ov,) = intersect(a, b)
+    hand = Overlap(t=(0.25, 0.75), u=(1.0, 0.0))
+    assert type(ov) is Overlap and ov == hand and hash(ov) == hash(hand) and repr(ov) == repr(hand)
+    assert ov.reversed_direction
+
+
+def test_batch_rows_go_to_their_own_pairs() -> None:
+    rng = np.random.default_rng(7)
+    pairs = [(RationalBezier(rng.random((4, 2))), RationalBezier(rng.random((4, 2)))) for _ in range(300)]
+    many = intersect_many(pairs, workers=2)
+    assert sum(len(r) for r in many) > 100  # random cubics in one square cross often
+    for (a, b), got in zip(pairs, many, strict=True):
+        one = intersect(a, b)
+        assert [_fields(r) for r in got] == [_fields(r) for r in one]
+        assert got.tol_used == one.tol_used and got.unresolved == one.unresolved == ()
+
+
+def test_unresolved_rows_become_parameter_boxes() -> None:
+    # nine crossings, one clipping step allowed: the budget leaves boxes open
+    f9 = [-1.09375, 4.135416666666667, -3.1354166666666665, 2.09375]
+    x3 = [0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0]
+    a = RationalBezier(np.column_stack([x3, f9]))
+    b = RationalBezier(np.column_stack([f9, x3]))
+    res = intersect(a, b, budget=1, on_budget="return")
+    assert res.unresolved and all(type(bx) is ParameterBox for bx in res.unresolved)
+    assert all(0.0 <= bx.t0 <= bx.t1 <= 1.0 and 0.0 <= bx.u0 <= bx.u1 <= 1.0 for bx in res.unresolved)
+    assert len(intersect(a, b)) == 9
