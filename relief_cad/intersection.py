@@ -85,7 +85,7 @@ from ._kernels import (
     intersect_batch_kernel,
     intersect_one_kernel,
 )
-from ._kernels.rows import distribute, rows_to_list
+from ._kernels.rows import batch_lists, rows_to_list
 from ._types import FloatArray
 from .contacts import needs_refining, refine_contacts, refine_self, self_overlaps, whole_overlap
 from .curves import RationalBezier
@@ -126,7 +126,7 @@ def _ro(arr: FloatArray) -> FloatArray:
 def _planar(pa: FloatArray, wa: FloatArray, pb: FloatArray, wb: FloatArray, tol: float,
             budget: int) -> IntersectionList:
     """Run the pair kernel on arrays made read-only C float64 first."""
-    return rows_to_list(intersect_one_kernel(_ro(pa), _ro(wa), _ro(pb), _ro(wb), tol, budget), tol)
+    return rows_to_list(intersect_one_kernel(_ro(pa), _ro(wa), _ro(pb), _ro(wb), tol, budget), tol)[0]
 
 
 def _may_coincide(pa: FloatArray, pb: FloatArray, tol: float | None) -> bool:
@@ -341,8 +341,8 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
         if whole is not None:
             return IntersectionList([whole], tol_used=ftol)
         rows = intersect_one_kernel(va, wa, vb, wb, ftol, nbudget)
-    res = rows_to_list(rows, ftol)
-    if res.unresolved or needs_refining(a, b, res):
+    res, final = rows_to_list(rows, ftol)
+    if not final and (res.unresolved or needs_refining(a, b, res)):
         res = finish(_with_tol(_refined(a, b, res, ftol), ftol), on_budget)
     return res
 
@@ -456,20 +456,17 @@ def _planar_batch(pairs: list[tuple[RationalBezier, RationalBezier]], tols: Floa
     pts.flags.writeable = False
     wts.flags.writeable = False
     idx = np.arange(2 * len(pairs), dtype=np.int64).reshape(-1, 2)
-    used = tols.tolist()
     out: list[IntersectionList] = [IntersectionList()] * len(pairs)
 
     def chunk(start: int, stop: int) -> None:
         rows = intersect_batch_kernel(pts, wts, offsets, idx[start:stop], tols[start:stop], budget)
-        items: list[list[Result]] = [[] for _ in range(start, stop)]
-        boxes: list[list[ParameterBox]] = [[] for _ in range(start, stop)]
-        distribute(rows, items, boxes, True)  # by pair, each by t (the kernel's order)
-        for j in range(stop - start):
-            k = start + j
-            listed = IntersectionList(items[j], boxes[j], used[k])
-            if boxes[j] or (items[j] and needs_refining(*pairs[k], listed)):
-                listed = finish(_with_tol(_refined(*pairs[k], listed, used[k]), used[k]), on_budget)
-            out[k] = listed
+        lists, looks = batch_lists(rows, tols[start:stop])  # by pair, each by t (the kernel's order)
+        for j in looks:  # the pairs whose rows a budget left open or that refining may change
+            listed, (a, b) = lists[j], pairs[start + j]
+            if listed.unresolved or needs_refining(a, b, listed):
+                lists[j] = finish(_with_tol(_refined(a, b, listed, listed.tol_used), listed.tol_used),
+                                  on_budget)
+        out[start:stop] = lists
 
     n = len(pairs)
     size = n if workers <= 1 or n < 2 * _MIN_CHUNK else max(_MIN_CHUNK, -(-n // (4 * workers)))

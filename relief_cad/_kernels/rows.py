@@ -12,16 +12,16 @@ GIL throughout and knows no kernel: it reads the rows and calls the result class
 
 >>> import numpy as np
 >>> rows = np.array([[0.0, 0.0, 0.5, 0.25, 0.5, 0.25, 1.0, 2.0, 0.0]])
->>> res = rows_to_list(rows, 1e-9)
->>> res[0].t, res[0].u, res[0].point.tolist(), res[0].kind, res.tol_used
-(0.5, 0.25, [1.0, 2.0], 'crossing', 1e-09)
+>>> res, final = rows_to_list(rows, 1e-9)
+>>> res[0].t, res[0].u, res[0].point.tolist(), res[0].kind, res.tol_used, final
+(0.5, 0.25, [1.0, 2.0], 'crossing', 1e-09, True)
 """
 
 from __future__ import annotations
 
 import cython
 
-from ..results import Intersection, IntersectionList, Overlap, ParameterBox
+from ..results import Intersection, IntersectionList, Overlap, ParameterBox, Result
 from .constants import KIND_CROSSING, KIND_OVERLAP, KIND_TANGENT
 
 _KIND_NAMES = ("crossing", "tangent")  # by kind code
@@ -30,7 +30,7 @@ _TANGENT = cython.declare(cython.int, KIND_TANGENT)
 _OVERLAP = cython.declare(cython.int, KIND_OVERLAP)
 
 
-def distribute(rows, items: list, boxes: list, planar: cython.bint) -> None:
+def distribute(rows, items: list, boxes: list, planar: cython.bint, looks: list = None) -> None:
     """Append the result object of each row of ``rows``, in order, to the lists of its pair.
 
     ``rows`` (r, 9) float64: planar rows (``planar`` True; column 0 indexes ``items`` and
@@ -40,18 +40,24 @@ def distribute(rows, items: list, boxes: list, planar: cython.bint) -> None:
     dataclasses' ``__init__`` (three guarded ``setattr`` each): their ``__dict__`` is filled
     with the same fields, so they compare, hash and print as if built by hand.
 
+    ``looks`` (a list, or None) gets the index of each pair with a row that
+    :func:`relief_cad.contacts.needs_refining` may not pass as it is, once: a box, a contact that
+    is not a crossing, or a crossing at an end of either curve. The pairs not listed need no look.
+
     >>> import numpy as np
-    >>> items, boxes = [[], []], [[], []]
+    >>> items, boxes, looks = [[], []], [[], []], []
     >>> distribute(np.array([[1.0, 2.0, 0.1, 0.2, 0.3, 0.4, 0.0, 0.0, 0.0],
-    ...                      [1.0, 3.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0]]), items, boxes, True)
-    >>> items[1], boxes[1]
-    ([Overlap(t=(0.1, 0.3), u=(0.2, 0.4), kind='overlap')], [ParameterBox(t0=0.0, t1=1.0, u0=0.0, u1=1.0)])
+    ...                      [1.0, 3.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0]]), items, boxes, True, looks)
+    >>> items[1], boxes[1], looks
+    ([Overlap(t=(0.1, 0.3), u=(0.2, 0.4), kind='overlap')],
+     [ParameterBox(t0=0.0, t1=1.0, u0=0.0, u1=1.0)], [1])
     """
     # (run as plain Python, the rows are read as Python floats, as compiled: not numpy scalars)
     R: cython.const[cython.double][:, :] = rows if cython.compiled else rows.astype(object)
     i: cython.Py_ssize_t
     c: cython.Py_ssize_t = 1 if planar else 0  # the kind's column
     k: cython.Py_ssize_t = 0
+    last: cython.Py_ssize_t = -1  # the last pair put in looks
     kind: cython.int
     points = rows[:, c + 5 : 8]  # a view of ``rows``, read-only (the view only)
     points.setflags(write=False)
@@ -67,6 +73,17 @@ def distribute(rows, items: list, boxes: list, planar: cython.bint) -> None:
                                                         (R[i, c + 2], R[i, c + 4])))
         else:
             cython.cast(list, boxes[k]).append(_box(R[i, c + 1], R[i, c + 3], R[i, c + 2], R[i, c + 4]))
+        if looks is not None and k != last and not (
+                kind == _CROSSING and _inner(R[i, c + 1]) and _inner(R[i, c + 2])):
+            looks.append(k)
+            last = k
+
+
+@cython.cfunc
+@cython.inline
+def _inner(x: cython.double) -> cython.bint:
+    """True when a parameter is not an end (0 or 1) of its curve."""
+    return x != 0.0 and x != 1.0
 
 
 @cython.cfunc
@@ -106,29 +123,66 @@ def _box(t0: cython.double, t1: cython.double, u0: cython.double, u1: cython.dou
     return obj
 
 
-def rows_to_list(rows, tol: cython.double) -> IntersectionList:
-    """The :class:`IntersectionList` of one planar pair's rows (``tol_used`` ``tol``).
+def rows_to_list(rows, tol: cython.double) -> tuple[IntersectionList, bool]:
+    """``(results, final)``: the :class:`IntersectionList` of one planar pair's rows, and whether it is final.
 
-    The kernel gives a pair's points and overlaps in the order of their ``t`` (a point's ``t``, an
-    overlap's first ``t``; stable), then its unresolved boxes: the order of the list. ``rows``
-    must be the caller's own new array (see :func:`distribute`).
+    ``tol_used`` is ``tol``. The kernel gives a pair's points and overlaps in the order of their
+    ``t`` (a point's ``t``, an overlap's first ``t``; stable), then its unresolved boxes: the
+    order of the list. ``final`` is True when no row needs a look (see :func:`distribute`): no
+    box is open and :func:`relief_cad.contacts.needs_refining` would pass it. ``rows`` must be
+    the caller's own new array (see :func:`distribute`).
 
     >>> import numpy as np
-    >>> len(rows_to_list(np.empty((0, 9)), 1e-9))
-    0
+    >>> res, final = rows_to_list(np.empty((0, 9)), 1e-9)
+    >>> len(res), res.tol_used, final
+    (0, 1e-09, True)
     """
     out = IntersectionList.__new__(IntersectionList)  # filled here: its ``__init__`` copies
     out.tol_used = tol
+    out.unresolved = ()
     if rows.shape[0] == 0:
-        out.unresolved = ()
-        return out
+        return out, True
     boxes: list = []
-    distribute(rows, [out], [boxes], True)
-    out.unresolved = tuple(boxes)
-    return out
+    looks: list = []
+    distribute(rows, [out], [boxes], True, looks)
+    if boxes:
+        out.unresolved = tuple(boxes)
+    return out, not looks
 
 
-def space_results(rows) -> tuple:
+def batch_lists(rows, tols) -> tuple[list[IntersectionList], list[int]]:
+    """``(lists, looks)``: the :class:`IntersectionList` of each pair of a batch's planar rows.
+
+    ``tols`` (p,) float64 holds each pair's tolerance (its list's ``tol_used``); column 0 of
+    ``rows`` indexes it. ``looks`` lists the pairs that need a look (see :func:`distribute`),
+    in order; the other lists are final. ``rows`` must be the caller's own new array.
+
+    >>> import numpy as np
+    >>> lists, looks = batch_lists(np.array([[1.0, 0.0, 0.5, 0.5, 0.5, 0.5, 1.0, 1.0, 0.0]]),
+    ...                            np.array([1e-9, 2e-9]))
+    >>> [len(x) for x in lists], lists[1].tol_used, looks
+    ([0, 1], 2e-09, [])
+    """
+    T: cython.const[cython.double][:] = tols
+    j: cython.Py_ssize_t
+    n: cython.Py_ssize_t = T.shape[0]
+    lists: list = []
+    boxes: list = []
+    for j in range(n):
+        out = IntersectionList.__new__(IntersectionList)
+        out.tol_used = T[j]
+        out.unresolved = ()
+        lists.append(out)
+        boxes.append([])
+    looks: list = []
+    distribute(rows, lists, boxes, True, looks)
+    for j in looks:
+        if boxes[j]:
+            lists[j].unresolved = tuple(boxes[j])
+    return lists, looks
+
+
+def space_results(rows) -> tuple[list[Result], list[ParameterBox]]:
     """``(items, boxes)``: the result objects of one space pair's rows, in the rows' order.
 
     >>> import numpy as np

@@ -14,7 +14,7 @@ from relief_cad.results import Intersection, IntersectionList, Overlap, Paramete
 
 
 def test_the_compiled_module_runs_its_own_examples() -> None:
-    result = doctest.testmod(rows_module)
+    result = doctest.testmod(rows_module, optionflags=doctest.NORMALIZE_WHITESPACE | doctest.ELLIPSIS)
     assert result.attempted >= 5 and result.failed == 0
 
 
@@ -74,3 +74,21 @@ def test_unresolved_rows_become_parameter_boxes() -> None:
     assert res.unresolved and all(type(bx) is ParameterBox for bx in res.unresolved)
     assert all(0.0 <= bx.t0 <= bx.t1 <= 1.0 and 0.0 <= bx.u0 <= bx.u1 <= 1.0 for bx in res.unresolved)
     assert len(intersect(a, b)) == 9
+
+
+@pytest.mark.parametrize(("kind", "t", "u", "final"), [
+    (0.0, 0.5, 0.25, True),   # an interior crossing is final as the kernel gives it
+    (1.0, 0.5, 0.25, False),  # a tangent contact is refined
+    (0.0, 0.0, 0.25, False),  # a crossing at an end of either curve may be at a singular end
+    (0.0, 0.5, 1.0, False),
+    (2.0, 0.5, 0.25, False),  # an overlap
+    (3.0, 0.5, 0.25, False),  # an open box
+])
+def test_a_pair_is_final_only_when_every_row_is_an_interior_crossing(
+        kind: float, t: float, u: float, final: bool) -> None:
+    first = [0.0, 0.0, 0.1, 0.1, 0.1, 0.1, 0.0, 0.0, 0.0]  # an interior crossing before it
+    rows = np.array([first, [0.0, kind, t, u, min(1.0, t + 0.1), min(1.0, u + 0.1), 1.0, 2.0, 0.0]])
+    res, got = rows_module.rows_to_list(rows, 1e-9)
+    assert got is final and len(res) + len(res.unresolved) == 2
+    lists, looks = rows_module.batch_lists(np.vstack([rows, rows + np.eye(9)[0]]), np.array([1e-9, 2e-9]))
+    assert looks == ([] if final else [0, 1]) and [x.tol_used for x in lists] == [1e-9, 2e-9]
