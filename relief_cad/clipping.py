@@ -26,6 +26,7 @@ clip range is where both hulls reach ``>= 0``.
 
 from __future__ import annotations
 
+import math
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
@@ -39,6 +40,7 @@ from ._kernels import (
     intersect_batch_kernel,
 )
 from ._types import FloatArray
+from .contacts import range_exponent
 from .curves import RationalBezier
 from .errors import InvalidInputError, NonFiniteError, ShapeError, WeightError
 from .tolerances import _default_tolerances, resolve_tolerance
@@ -90,7 +92,12 @@ def compute_fat_line(nodes: FloatArray, *, perpendicular: bool = False
     >>> compute_fat_line(np.array([[1.0, 1.0], [1.0, 1.0]]))  # point-like: defined, no error
     (0.0, 1.0, -1.0, 0.0, 0.0)
     """
-    nx, ny, c, dmin, dmax = fat_line_kernel(_points(nodes), perpendicular)
+    pts = _points(nodes)
+    # the kernel squares distances (its own callers pass a normalised frame): coordinates out of
+    # the safe range are scaled by a power of two first (exact), the offsets scaled back
+    exp = range_exponent(float(np.max(np.abs(pts))))
+    nx, ny, c, dmin, dmax = fat_line_kernel(np.ldexp(pts, -exp) if exp else pts, perpendicular)
+    c, dmin, dmax = math.ldexp(c, exp), math.ldexp(dmin, exp), math.ldexp(dmax, exp)
     # (+ 0.0 turns a -0.0 into 0.0)
     return float(nx) + 0.0, float(ny) + 0.0, float(c) + 0.0, float(dmin) + 0.0, float(dmax) + 0.0
 

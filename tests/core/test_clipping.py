@@ -28,6 +28,21 @@ def test_fat_line_contains_the_curve(seed: int, perpendicular: bool) -> None:
     assert d.min() >= line[3] - 1e-12 and d.max() <= line[4] + 1e-12
 
 
+@pytest.mark.parametrize("scale", [1e-200, 1e-160, 1e-150, 1e-5, 1.0, 1e5, 1e150, 1e160, 1e200])
+def test_fat_line_normal_is_a_unit_vector_at_every_scale(scale: float) -> None:
+    # the chord's length is sqrt(x² + y²) where the squares neither over- nor underflow, hypot
+    # elsewhere: a unit normal within an ulp or two at every size of chord
+    rng = np.random.default_rng(int(np.log10(scale)) + 300)
+    for _ in range(50):
+        pts = scale * rng.normal(size=(4, 2))
+        nx, ny, c, dmin, dmax = compute_fat_line(pts)
+        assert abs(np.hypot(nx, ny) - 1.0) <= 4e-16
+        chord = pts[-1] - pts[0]
+        assert abs(nx * chord[0] + ny * chord[1]) <= 1e-15 * np.hypot(*chord)
+        d = _dist((nx, ny, c, dmin, dmax), pts)
+        assert d.min() >= dmin - 1e-14 * scale and d.max() <= dmax + 1e-14 * scale
+
+
 @pytest.mark.parametrize("nodes", [
     [[1.0, 1.0], [1.0, 1.0], [1.0, 1.0]],              # point-like
     [[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [0.0, 0.0]],  # closed
