@@ -484,6 +484,7 @@ def _pair_core(
     wu: cython.double
     perp: cython.bint
     wide: cython.bint
+    fresh: cython.bint
     distinct: cython.bint
     padt: cython.double
     padu: cython.double
@@ -530,8 +531,9 @@ def _pair_core(
     CB = scratch[o2 + ma : o2 + ma + mb, 0:2]
     VA = scratch[o1 : o1 + ma, 0]
     VB = scratch[o1 + ma : o1 + ma + mb, 0]
-    _cartesian(HA, CA, VA)
-    _cartesian(HB, CB, VB)
+    # the whole curves' Cartesian points and boxes: the clipping's first step starts from them
+    axl0, axh0, ayl0, ayh0 = _cartesian(HA, CA, VA)
+    bxl0, bxh0, byl0, byh0 = _cartesian(HB, CB, VB)
     SA = scratch[o3 + ma + mb : o3 + 2 * ma + mb, 0:3]
     SB = scratch[o3 + 2 * ma + mb : o3 + 2 * ma + 2 * mb, 0:3]
     ea = scratch[o1 + ma + mb : o1 + 2 * ma + mb, 0]
@@ -680,8 +682,11 @@ def _pair_core(
         t1 = stack[nstack, 1]
         u0 = stack[nstack, 2]
         u1 = stack[nstack, 3]
-        fresh = False
-        axl = axh = ayl = ayh = bxl = bxh = byl = byh = 0.0
+        # the first step (both whole curves) takes CA, CB and their boxes as made above (the end
+        # points and overlaps leave them alone); every other one makes its own
+        fresh = iters == 0
+        axl, axh, ayl, ayh = axl0, axh0, ayl0, ayh0
+        bxl, bxh, byl, byh = bxl0, bxh0, byl0, byh0
         while True:
             iters += 1
             if iters > budget:
