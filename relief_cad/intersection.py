@@ -81,9 +81,9 @@ from ._checks import (
     check_workers,
 )
 from ._kernels import (
-    ends_match,
     intersect_batch_kernel,
     intersect_one_kernel,
+    pack_pairs,
 )
 from ._kernels.rows import batch_lists, rows_to_list
 from ._types import FloatArray
@@ -127,22 +127,6 @@ def _planar(pa: FloatArray, wa: FloatArray, pb: FloatArray, wb: FloatArray, tol:
             budget: int) -> IntersectionList:
     """Run the pair kernel on arrays made read-only C float64 first."""
     return rows_to_list(intersect_one_kernel(_ro(pa), _ro(wa), _ro(pb), _ro(wb), tol, budget), tol)[0]
-
-
-def _may_coincide(pa: FloatArray, pb: FloatArray, tol: float | None) -> bool:
-    """True when planar curves may be one coincident pair: a cheap gate before the geometric test.
-
-    Such pairs go through :func:`intersect`, whose :func:`~relief_cad.contacts.whole_overlap` answers
-    coincident curves before clipping (their slowest case). That needs both end points of ``pa``
-    within ``tol`` of those of ``pb``, one way round or the other: checked here within ``2 tol`` (a
-    margin for the exact rescaling of huge coordinates there), by the compiled test that
-    :func:`intersect` runs in its kernel call. ``tol`` None (a batch with per-pair default
-    tolerances, not yet known): the first x of ``pa`` equals an end x of ``pb``.
-    """
-    if tol is None:
-        ax0 = pa.item(0)
-        return ax0 == pb.item(0) or ax0 == pb.item(-2)
-    return ends_match(pa, pb, 2.0 * tol)
 
 
 def _refined(a: RationalBezier, b: RationalBezier, res: IntersectionList, tol: float) -> IntersectionList:
@@ -439,22 +423,17 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     return finish(IntersectionList(items, res.unresolved, ftol), on_budget)
 
 
-def _planar_batch(pairs: list[tuple[RationalBezier, RationalBezier]], tols: FloatArray, budget: int,
-                  on_budget: OnBudget, workers: int) -> list[IntersectionList]:
+def _planar_batch(pairs: list[tuple[RationalBezier, RationalBezier]], pts: FloatArray, wts: FloatArray,
+                  offsets: NDArray[np.int64], tols: FloatArray, budget: int, on_budget: OnBudget,
+                  workers: int) -> list[IntersectionList]:
     """The result lists of planar ``pairs`` (``tols``: each pair's resolved tolerance), in order.
 
-    The curves are packed once; contiguous chunks of pairs run on ``workers`` threads, each
+    The curves come packed (:func:`relief_cad._kernels.batch.pack_pairs`: pair ``i`` is curves
+    ``2 i`` and ``2 i + 1``); contiguous chunks of pairs run on ``workers`` threads, each
     through the batch kernel (without the GIL) and on to its result objects (with it), so one
     chunk's objects are built while another's kernel runs. The output is the same for any
     ``workers``; a budget error is that of the first pair, in order, whose budget ran out.
     """
-    cps = [c.control_points for pr in pairs for c in pr]
-    offsets = np.zeros(len(cps) + 1, dtype=np.int64)
-    np.cumsum(np.fromiter(map(len, cps), dtype=np.int64, count=len(cps)), out=offsets[1:])
-    pts = np.ascontiguousarray(np.concatenate(cps))
-    wts = np.ascontiguousarray(np.concatenate([c.weights for pr in pairs for c in pr]))
-    pts.flags.writeable = False
-    wts.flags.writeable = False
     idx = np.arange(2 * len(pairs), dtype=np.int64).reshape(-1, 2)
     out: list[IntersectionList] = [IntersectionList()] * len(pairs)
 
@@ -535,9 +514,12 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
     nbudget = check_budget(budget)
     ftol = check_tol(tol)
     nworkers = check_workers(workers)
-    planar: list[int] = []
     out: list[IntersectionList | None] = [None] * len(plist)
-    for k, pr in enumerate(plist):
+    # the planar pairs that cannot coincide all along, packed in one compiled pass; the others
+    # (and any bad item, which raises here) go through intersect one by one
+    planar, rest, pts, wts, offsets = pack_pairs(plist, RationalBezier, -1.0 if ftol is None else 2.0 * ftol)
+    for k in rest:
+        pr = plist[k]
         if not isinstance(pr, tuple) or len(pr) != 2:
             raise InputTypeError(f"pairs[{k}] should be a tuple (a, b), not {type(pr).__name__}")
         a, b = pr
@@ -545,16 +527,12 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
             check_curve(a, f"pairs[{k}][0]")
         if not isinstance(b, RationalBezier):
             check_curve(b, f"pairs[{k}][1]")
-        pa = a.control_points
-        pb = b.control_points
-        if pa.shape[1] == 2 and pb.shape[1] == 2 and not _may_coincide(pa, pb, ftol):
-            planar.append(k)
-        else:
-            out[k] = intersect(a, b, tol=ftol, budget=nbudget, on_budget=on_budget)
+        out[k] = intersect(a, b, tol=ftol, budget=nbudget, on_budget=on_budget)
     if planar:
-        tols = (_pairs_default_tolerances([plist[k] for k in planar])
-                if ftol is None else np.array([resolve_tolerance(ftol, *plist[k]) for k in planar]))
-        for k, listed in zip(planar, _planar_batch([plist[k] for k in planar], tols, nbudget, on_budget,
-                                                   nworkers), strict=True):
+        taken = [plist[k] for k in planar]
+        tols = (_pairs_default_tolerances(taken) if ftol is None
+                else np.array([resolve_tolerance(ftol, *pr) for pr in taken]))
+        lists = _planar_batch(taken, pts, wts, offsets, tols, nbudget, on_budget, nworkers)
+        for k, listed in zip(planar, lists, strict=True):
             out[k] = listed
     return [o if o is not None else IntersectionList() for o in out]

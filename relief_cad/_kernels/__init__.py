@@ -62,6 +62,7 @@ __all__ = [
     "intersect_batch_kernel",
     "intersect_one_kernel",
     "intersect_pair_kernel",
+    "pack_pairs",
     "space_pair_kernel",
     "space_pair_rows",
 ]
@@ -114,7 +115,7 @@ def _load() -> bool:
 COMPILED: bool = _load()
 """True when the compiled kernels run; False under ``RELIEF_CAD_PURE=1``."""
 
-from .batch import ends_match, intersect_batch_kernel, intersect_one_kernel  # noqa: E402
+from .batch import ends_match, intersect_batch_kernel, intersect_one_kernel, pack_pairs  # noqa: E402
 from .clip import clip_range_kernel, fat_line_kernel, hull_range_kernel  # noqa: E402
 from .constants import (  # noqa: E402
     KIND_CROSSING,

@@ -259,3 +259,71 @@ def intersect_one_kernel(
         return np.array(buf[rows : rows + n]) if res is None else res[:n]
     finally:
         _spare = spare
+
+
+def pack_pairs(pairs: list, cls: type, lim: cython.double):
+    """Sort out the pairs that the batch kernel takes and pack their curves: ``(taken, rest, P, W, offsets)``.
+
+    A pair is taken when it is a tuple of two curves of exactly the class ``cls`` (a
+    :class:`~relief_cad.RationalBezier`), both planar, whose end points do not match: within
+    ``lim`` per coordinate either way round (:func:`_ends_match`), or, for ``lim < 0`` (per-pair
+    default tolerances, not yet known), the first x of ``a`` equals neither end x of ``b``. Such
+    pairs may coincide all along, which :func:`relief_cad.intersect` answers first. ``taken`` and
+    ``rest`` list the indices of the taken pairs and of all others, in order. The taken curves
+    are packed as :func:`intersect_batch_kernel` takes them: curve ``2 i`` is ``a`` of pair
+    ``taken[i]`` and ``2 i + 1`` its ``b``, rows ``offsets[c]:offsets[c + 1]`` of ``P`` (N, 2) and
+    ``W`` (N,), both read-only. The curves' own kernel views are read (made once per curve), so
+    there is no Python per row.
+    """
+    k: cython.Py_ssize_t
+    total: cython.Py_ssize_t = 0
+    PA: cython.const[cython.double][:, :]
+    PB: cython.const[cython.double][:, :]
+    taken: list = []
+    rest: list = []
+    views: list = []  # the kernel views (points, weights) of the taken curves, in order
+    for k in range(len(pairs)):
+        pr = pairs[k]
+        if type(pr) is not tuple or len(pr) != 2 or type(pr[0]) is not cls or type(pr[1]) is not cls:
+            rest.append(k)
+            continue
+        ka = pr[0]._kv or pr[0]._kernel_views()
+        kb = pr[1]._kv or pr[1]._kernel_views()
+        PA = ka[0]
+        PB = kb[0]
+        if PA.shape[1] != 2 or PB.shape[1] != 2 or (_ends_match(PA, PB, lim) if lim >= 0.0 else (
+                PA[0, 0] == PB[0, 0] or PA[0, 0] == PB[PB.shape[0] - 1, 0])):
+            rest.append(k)
+            continue
+        taken.append(k)
+        views.append(ka)
+        views.append(kb)
+        total += PA.shape[0] + PB.shape[0]
+    P = np.empty((total, 2))
+    W = np.empty(total)
+    offsets = np.empty(len(views) + 1, dtype=np.int64)
+    _pack_views(views, P, W, offsets)
+    P.flags.writeable = False
+    W.flags.writeable = False
+    return taken, rest, P, W, offsets
+
+
+@cython.cfunc
+def _pack_views(views: list, P: cython.double[:, :], W: cython.double[:],
+                offsets: cython.longlong[:]) -> None:
+    """Copy each curve's kernel views ``(points, weights)`` of ``views`` into ``P``, ``W`` back to back."""
+    c: cython.Py_ssize_t
+    i: cython.Py_ssize_t
+    row: cython.Py_ssize_t = 0
+    Q: cython.const[cython.double][:, :]
+    V: cython.const[cython.double][:]
+    offsets[0] = 0
+    for c in range(len(views)):
+        Q = views[c][0]
+        V = views[c][1]
+        for i in range(Q.shape[0]):
+            P[row + i, 0] = Q[i, 0]
+            P[row + i, 1] = Q[i, 1]
+            W[row + i] = V[i]
+        row += Q.shape[0]
+        offsets[c + 1] = row

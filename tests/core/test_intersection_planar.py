@@ -280,6 +280,35 @@ def test_intersect_many_rejects_non_pairs() -> None:
         intersect_many([PARABOLA])  # type: ignore[list-item]
 
 
+class _Curve(RationalBezier):
+    """A subclass: its pairs go through intersect one by one, not the packed batch."""
+
+
+def test_intersect_many_sorts_out_every_kind_of_pair_as_intersect_answers_it() -> None:
+    # packed planar pairs, a pair that may coincide (one end shared), an identical pair, a space
+    # pair, a planar curve against a space one, a subclass, a list instead of a tuple: each list
+    # is intersect's own, in order, for the default tolerance and a given one
+    rng = np.random.default_rng(5)
+    cubic = RationalBezier(rng.random((4, 2)))
+    sub = _Curve(rng.random((3, 2)), rng.random(3) + 0.5)
+    space = RationalBezier(np.column_stack([rng.random((4, 2)), [0.0, 0.1, -0.1, 0.0]]))
+    shared = RationalBezier([cubic.control_points[0], [2.0, 2.0]])
+    pairs = [(cubic, RationalBezier(rng.random((4, 2)))), (cubic, shared), (cubic, cubic),
+             (space, RationalBezier(rng.random((4, 3)))), (cubic, space), (sub, cubic), (cubic, sub),
+             (RationalBezier(rng.random((5, 2))), RationalBezier(rng.random((2, 2))))]
+    for tol in (None, 1e-6):
+        many = intersect_many(pairs, tol=tol)
+        for (a, b), got in zip(pairs, many, strict=True):
+            one = intersect(a, b, tol=tol)
+            assert [repr(r) for r in got] == [repr(r) for r in one]
+            assert got.tol_used == one.tol_used and got.unresolved == one.unresolved
+        assert [type(r).__name__ for r in many[2]] == ["Overlap"]  # the identical pair: one overlap
+    with pytest.raises(InputTypeError, match=r"pairs\[1\] should be a tuple"):
+        intersect_many([(cubic, cubic), [cubic, cubic]])  # type: ignore[list-item]
+    with pytest.raises(InputTypeError, match=r"pairs\[2\]\[1\]"):
+        intersect_many([(cubic, cubic), (cubic, cubic), (cubic, "not a curve")])  # type: ignore[list-item]
+
+
 # ----------------------------------------------------------------------------- budgets
 
 
