@@ -16,7 +16,7 @@ from Cython.Compiler import Options
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
 
-MODULES = ("bezier", "clip", "certify", "polish", "planar", "batch", "space", "rows")
+MODULES = ("rows", "bezier", "clip", "certify", "polish", "planar", "batch", "space")
 SANITIZE = os.environ.get("RELIEF_CAD_SANITIZE", "").strip().lower()
 
 # -O3, never -ffast-math; no contraction into FMA: every run and every compiler gives the same bits

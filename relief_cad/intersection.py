@@ -84,6 +84,7 @@ from ._kernels import (
     intersect_batch_kernel,
     intersect_one_kernel,
     pack_pairs,
+    planar_pair,
 )
 from ._kernels.rows import batch_lists, rows_to_list
 from ._types import FloatArray
@@ -301,31 +302,29 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
     if type(on_budget) is not str or on_budget != "raise":  # the default needs no further check
         check_on_budget(on_budget)
     nbudget = DEFAULT_BUDGET if budget is None else check_budget(budget)
-    pa = a.control_points
-    if pa.shape[1] == 3 or (b is not None and b.control_points.shape[1] == 3):
-        if b is None:
+    if b is None:
+        if a.control_points.shape[1] == 3:
             result: IntersectionList = intersect_space(a, b, tol=tol, budget=budget, on_budget=on_budget)
             return result
-        return space_pair(a, b, check_tol(tol), nbudget, on_budget)
-    if b is None:
         ftol = resolve_tolerance(check_tol(tol), a)
         return finish(_with_tol(_self_planar(a.control_points, a.weights, ftol, nbudget), ftol), on_budget)
     # the default, or the given tol raised to the data's rounding level (one rule: resolve_tolerance;
     # _sampled_tolerance is its compiled default for two curves)
     ftol = (_sampled_tolerance((a, b)) if tol is None else None) or resolve_tolerance(check_tol(tol), a, b)
-    # a RationalBezier's arrays go in as the kernel's own views, made once per curve (a numpy array
-    # would be converted on every call). Curves whose end points match within 2 tol (a margin for
-    # the exact rescaling of huge coordinates there) may coincide all along, the clipping's slowest
-    # case: the kernel returns None for them, and whole_overlap decides by geometry first
-    va, wa = a._kv or a._kernel_views()
-    vb, wb = b._kv or b._kernel_views()
-    rows = intersect_one_kernel(va, wa, vb, wb, ftol, nbudget, 2.0 * ftol)
-    if rows is None:
+    # planar pairs in one compiled call (planar_pair: the curves' kernel views, the kernel, the
+    # result list). Curves whose end points match within 2 tol (a margin for the exact rescaling of
+    # huge coordinates there) may coincide all along, the clipping's slowest case: whole_overlap
+    # decides them by geometry first
+    got = planar_pair(a, b, ftol, nbudget)
+    if got is None:  # a space curve: the relief scheme
+        return space_pair(a, b, check_tol(tol), nbudget, on_budget)
+    if got is False:
         whole = whole_overlap(a, b, ftol)
         if whole is not None:
             return IntersectionList([whole], tol_used=ftol)
-        rows = intersect_one_kernel(va, wa, vb, wb, ftol, nbudget)
-    res, final = rows_to_list(rows, ftol)
+        got = planar_pair(a, b, ftol, nbudget, False)
+    res: IntersectionList
+    res, final = got
     if not final and (res.unresolved or needs_refining(a, b, res)):
         res = finish(_with_tol(_refined(a, b, res, ftol), ftol), on_budget)
     return res

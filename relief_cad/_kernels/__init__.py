@@ -63,12 +63,13 @@ __all__ = [
     "intersect_one_kernel",
     "intersect_pair_kernel",
     "pack_pairs",
+    "planar_pair",
     "space_pair_kernel",
     "space_pair_rows",
 ]
 
 #: the compiled modules, in dependency order (``constants`` is plain Python, never compiled)
-KERNEL_MODULES: tuple[str, ...] = ("bezier", "clip", "certify", "polish", "planar", "batch", "space", "rows")
+KERNEL_MODULES: tuple[str, ...] = ("rows", "bezier", "clip", "certify", "polish", "planar", "batch", "space")
 
 PURE_ENV = "RELIEF_CAD_PURE"
 
@@ -115,7 +116,7 @@ def _load() -> bool:
 COMPILED: bool = _load()
 """True when the compiled kernels run; False under ``RELIEF_CAD_PURE=1``."""
 
-from .batch import ends_match, intersect_batch_kernel, intersect_one_kernel, pack_pairs  # noqa: E402
+from .batch import ends_match, intersect_batch_kernel, intersect_one_kernel, pack_pairs, planar_pair  # noqa: E402
 from .clip import clip_range_kernel, fat_line_kernel, hull_range_kernel  # noqa: E402
 from .constants import (  # noqa: E402
     KIND_CROSSING,

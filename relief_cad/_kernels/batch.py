@@ -16,6 +16,7 @@ from cython.cimports.libc.math import fabs, sqrt
 from .bezier import _grow
 from .constants import KIND_UNRESOLVED, RES_COLS
 from .planar import _apart, _box, _pair_core, scratch_rows
+from .rows import rows_to_list
 
 _K_UNRESOLVED = cython.declare(cython.double, KIND_UNRESOLVED)  # a C copy for the loops
 _NO_ROWS = np.empty((0, RES_COLS))
@@ -229,6 +230,20 @@ def intersect_one_kernel(
     rows, then room for result rows; rows that do not fit there go to a larger array, and the pair
     runs again (the same bits).
     """
+    return _one(PA, WA, PB, WB, tol, budget, ends_lim)
+
+
+@cython.cfunc
+def _one(
+    PA: cython.const[cython.double][:, :],
+    WA: cython.const[cython.double][:],
+    PB: cython.const[cython.double][:, :],
+    WB: cython.const[cython.double][:],
+    tol: cython.double,
+    budget: cython.longlong,
+    ends_lim: cython.double,
+):
+    """:func:`intersect_one_kernel`, called from C."""
     global _spare
     if ends_lim >= 0.0 and _ends_match(PA, PB, ends_lim):
         return None
@@ -259,6 +274,33 @@ def intersect_one_kernel(
         return np.array(buf[rows : rows + n]) if res is None else res[:n]
     finally:
         _spare = spare
+
+
+def planar_pair(a, b, tol: cython.double, budget: cython.longlong, ends: cython.bint = True):
+    """The results of two curves if both are planar: ``(IntersectionList, final)``, or None, or False.
+
+    ``a``, ``b``: :class:`~relief_cad.RationalBezier` (their kernel views are read, made once per
+    curve); ``tol`` their resolved tolerance (model units), ``budget`` the clipping budget. None
+    when either curve is a space curve (the caller's space path); False when ``ends`` is set and
+    their end points match within ``2 tol`` (curves that may coincide all along: the caller asks
+    :func:`relief_cad.contacts.whole_overlap` first, then calls again with ``ends`` False). Else
+    :func:`relief_cad._kernels.rows.rows_to_list` of the pair kernel's rows. The one-call path of
+    :func:`relief_cad.intersect`, without Python between the curves and the result list.
+    """
+    ka = a._kv
+    if ka is None:
+        ka = a._kernel_views()
+    kb = b._kv
+    if kb is None:
+        kb = b._kernel_views()
+    PA: cython.const[cython.double][:, :] = ka[0]
+    PB: cython.const[cython.double][:, :] = kb[0]
+    if PA.shape[1] != 2 or PB.shape[1] != 2:
+        return None
+    rows = _one(PA, ka[1], PB, kb[1], tol, budget, 2.0 * tol if ends else -1.0)
+    if rows is None:
+        return False
+    return rows_to_list(rows, tol)
 
 
 def pack_pairs(pairs: list, cls: type, lim: cython.double):
