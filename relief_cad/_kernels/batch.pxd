@@ -2,3 +2,5 @@
 from relief_cad._kernels.planar cimport _apart, _box, _pair_core, scratch_rows
 # the end-point gate, called by the space kernel as a C function (see space.pxd)
 cpdef bint _ends_match(const double[:, :] PA, const double[:, :] PB, double lim) noexcept
+# the one-pair entry, called by planar_pair as a C function and by Python callers
+cpdef object intersect_one_kernel(const double[:, :] PA, const double[:] WA, const double[:, :] PB, const double[:] WB, double tol, long long budget, double ends_lim=*)

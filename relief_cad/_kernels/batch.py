@@ -230,20 +230,6 @@ def intersect_one_kernel(
     rows, then room for result rows; rows that do not fit there go to a larger array, and the pair
     runs again (the same bits).
     """
-    return _one(PA, WA, PB, WB, tol, budget, ends_lim)
-
-
-@cython.cfunc
-def _one(
-    PA: cython.const[cython.double][:, :],
-    WA: cython.const[cython.double][:],
-    PB: cython.const[cython.double][:, :],
-    WB: cython.const[cython.double][:],
-    tol: cython.double,
-    budget: cython.longlong,
-    ends_lim: cython.double,
-):
-    """:func:`intersect_one_kernel`, called from C."""
     global _spare
     if ends_lim >= 0.0 and _ends_match(PA, PB, ends_lim):
         return None
@@ -297,7 +283,7 @@ def planar_pair(a, b, tol: cython.double, budget: cython.longlong, ends: cython.
     PB: cython.const[cython.double][:, :] = kb[0]
     if PA.shape[1] != 2 or PB.shape[1] != 2:
         return None
-    rows = _one(PA, ka[1], PB, kb[1], tol, budget, 2.0 * tol if ends else -1.0)
+    rows = intersect_one_kernel(PA, ka[1], PB, kb[1], tol, budget, 2.0 * tol if ends else -1.0)
     if rows is None:
         return False
     return rows_to_list(rows, tol)
