@@ -272,13 +272,18 @@ def planar_pair(a, b, tol: cython.double, budget: cython.longlong, ends: cython.
     :func:`relief_cad.contacts.whole_overlap` first, then calls again with ``ends`` False). Else
     :func:`relief_cad._kernels.rows.rows_to_list` of the pair kernel's rows. The one-call path of
     :func:`relief_cad.intersect`, without Python between the curves and the result list.
+
+    >>> from relief_cad import RationalBezier as R
+    >>> res, final = planar_pair(R([[0, 0], [2, 2]]), R([[0, 2], [2, 0]]), 1e-9, 1000)
+    >>> [(r.t, r.u, r.kind) for r in res], final
+    ([(0.5, 0.5, 'crossing')], True)
+    >>> planar_pair(R([[0, 0], [2, 2]]), R([[2, 2], [0, 0]]), 1e-9, 1000)  # the same segment
+    False
+    >>> planar_pair(R([[0, 0], [2, 2]]), R([[0, 2, 1], [2, 0, 1]]), 1e-9, 1000) is None  # a space curve
+    True
     """
-    ka = a._kv
-    if ka is None:
-        ka = a._kernel_views()
-    kb = b._kv
-    if kb is None:
-        kb = b._kernel_views()
+    ka = a._kv or a._kernel_views()
+    kb = b._kv or b._kernel_views()
     PA: cython.const[cython.double][:, :] = ka[0]
     PB: cython.const[cython.double][:, :] = kb[0]
     if PA.shape[1] != 2 or PB.shape[1] != 2:
@@ -293,15 +298,21 @@ def pack_pairs(pairs: list, cls: type, lim: cython.double):
     """Sort out the pairs that the batch kernel takes and pack their curves: ``(taken, rest, P, W, offsets)``.
 
     A pair is taken when it is a tuple of two curves of exactly the class ``cls`` (a
-    :class:`~relief_cad.RationalBezier`), both planar, whose end points do not match: within
-    ``lim`` per coordinate either way round (:func:`_ends_match`), or, for ``lim < 0`` (per-pair
-    default tolerances, not yet known), the first x of ``a`` equals neither end x of ``b``. Such
-    pairs may coincide all along, which :func:`relief_cad.intersect` answers first. ``taken`` and
-    ``rest`` list the indices of the taken pairs and of all others, in order. The taken curves
-    are packed as :func:`intersect_batch_kernel` takes them: curve ``2 i`` is ``a`` of pair
-    ``taken[i]`` and ``2 i + 1`` its ``b``, rows ``offsets[c]:offsets[c + 1]`` of ``P`` (N, 2) and
-    ``W`` (N,), both read-only. The curves' own kernel views are read (made once per curve), so
-    there is no Python per row.
+    :class:`~relief_cad.RationalBezier`), both planar, whose end points do not match. They match
+    within ``lim`` per coordinate either way round (:func:`_ends_match`), or, for ``lim < 0``
+    (per-pair default tolerances, not yet known), when the first x of ``a`` equals an end x of
+    ``b``: such curves may coincide all along, which :func:`relief_cad.intersect` answers first.
+    ``taken`` and ``rest`` list the indices of the taken pairs and of all others, in order. The
+    taken curves are packed as :func:`intersect_batch_kernel` takes them: curve ``2 i`` is ``a``
+    of pair ``taken[i]`` and ``2 i + 1`` its ``b``, rows ``offsets[c]:offsets[c + 1]`` of ``P``
+    (N, 2) and ``W`` (N,), both read-only. The curves' own kernel views are read (made once per
+    curve), so there is no Python per row.
+
+    >>> from relief_cad import RationalBezier as R
+    >>> line, arc = R([[0, 0], [2, 2]]), R([[0.5, 2], [1, 0], [2, 2]], [1.0, 0.5, 1.0])
+    >>> taken, rest, P, W, offsets = pack_pairs([(line, arc), (line, line), "x"], R, -1.0)
+    >>> taken, rest, offsets.tolist(), W.tolist()
+    ([0], [1, 2], [0, 2, 5], [1.0, 1.0, 1.0, 0.5, 1.0])
     """
     k: cython.Py_ssize_t
     total: cython.Py_ssize_t = 0
