@@ -52,7 +52,8 @@ class Intersection:
     u : float
         Parameter on the second curve (for self-intersections, ``t < u``).
     point : ndarray, shape (d,)
-        The intersection point in model units (the mean of ``a(t)`` and ``b(u)``).
+        The intersection point in model units (the mean of ``a(t)`` and ``b(u)``); read-only
+        in the results of the intersectors (a view of the kernel's output).
     kind : {"crossing", "tangent"}
         ``"crossing"`` for a transversal meeting, ``"tangent"`` for a tangent
         contact or a near-miss closer than the tolerance.
