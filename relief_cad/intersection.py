@@ -316,8 +316,8 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
     # huge coordinates there) may coincide all along, the clipping's slowest case: whole_overlap
     # decides them by geometry first
     got = planar_pair(a, b, ftol, nbudget)
-    if got is None:  # a space curve: the relief scheme
-        return space_pair(a, b, check_tol(tol), nbudget, on_budget)
+    if got is None:  # a space curve: the relief scheme, with the tolerance resolved above
+        return space_pair(a, b, check_tol(tol), nbudget, on_budget, ftol)
     if got is False:
         whole = whole_overlap(a, b, ftol)
         if whole is not None:

@@ -473,11 +473,13 @@ def intersect_space(
 
 
 def space_pair(a: RationalBezier, b: RationalBezier, tol: float | None, budget: int,
-               on_budget: OnBudget) -> IntersectionList:
+               on_budget: OnBudget, resolved: float | None = None) -> IntersectionList:
     """:func:`intersect_space` of two curves, ``tol``, ``budget`` and ``on_budget`` already checked.
 
     The one path of a pair of space curves (a planar one is placed in z = 0), for
     :func:`intersect_space` and :func:`relief_cad.intersect`. ``tol`` None: the default tolerance.
+    ``resolved``: the tolerance the caller already resolved from ``tol`` for these curves (the
+    same value, a planar curve counting as lying in z = 0), used as it is.
     Most pairs take one kernel call (:func:`relief_cad._kernels.space.space_pair_rows`); curves whose
     end points match (they may coincide all along: :func:`~relief_cad.contacts.whole_overlap`),
     coordinates out of the kernel's safe range, and pairs whose every frame shows an artefact take
@@ -485,8 +487,8 @@ def space_pair(a: RationalBezier, b: RationalBezier, tol: float | None, budget: 
     """
     ha, hb = a.homogeneous, b.homogeneous
     if ha.shape[1] != 4 or hb.shape[1] != 4:  # a planar curve goes in z = 0 (a space curve as it is)
-        return space_pair(a.embedded(3), b.embedded(3), tol, budget, on_budget)
-    tol_s = (_sampled_tolerance((a, b)) if tol is None else None) or resolve_tolerance(tol, a, b)
+        return space_pair(a.embedded(3), b.embedded(3), tol, budget, on_budget, resolved)
+    tol_s = resolved or (_sampled_tolerance((a, b)) if tol is None else None) or resolve_tolerance(tol, a, b)
     rows = space_pair_rows(ha, hb, tol_s, budget, 2.0 * tol_s)
     if rows is None:
         whole = whole_overlap(a, b, tol_s)  # coincident curves (closed ones too) by geometry

@@ -26,6 +26,7 @@ from relief_cad.errors import (
 )
 from relief_cad.intersection import _intersect_planar, intersect, intersect_line, intersect_many
 from relief_cad.results import Intersection, IntersectionList, Overlap
+from relief_cad.space import intersect_space
 
 PARABOLA = RationalBezier([[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]])  # y = 4 t (1 - t), x = 2 t
 LOOP = RationalBezier([[0.0, 0.0], [5.0, 4.0], [-1.0, 4.0], [4.0, 0.0]])
@@ -303,6 +304,11 @@ def test_intersect_many_sorts_out_every_kind_of_pair_as_intersect_answers_it() -
             assert [repr(r) for r in got] == [repr(r) for r in one]
             assert got.tol_used == one.tol_used and got.unresolved == one.unresolved
         assert [type(r).__name__ for r in many[2]] == ["Overlap"]  # the identical pair: one overlap
+    # intersect resolves a space pair's tolerance once, for the relief scheme too: the value
+    # intersect_space finds on the curves placed in z = 0
+    for tol in (None, 1e-6):
+        assert intersect(cubic, space, tol=tol).tol_used == intersect_space(
+            cubic.embedded(3), space, tol=tol).tol_used
     with pytest.raises(InputTypeError, match=r"pairs\[1\] should be a tuple"):
         intersect_many([(cubic, cubic), [cubic, cubic]])  # type: ignore[list-item]
     with pytest.raises(InputTypeError, match=r"pairs\[2\]\[1\]"):
