@@ -249,6 +249,27 @@ def _closest_u(ca: ExactCurve, cb: ExactCurve, t: Any, u0: Any) -> tuple[Any, An
     return u, mp.sqrt(sum((pa[k] - pb[k]) ** 2 for k in range(3)))
 
 
+def _one_point_of(c: ExactCurve, t: float, u: float, tol: float) -> bool:
+    """True when parameters ``t`` and ``u`` of one edge are one point of it, not a double point.
+
+    The same parameter (to 1e-9 of the range), or the closing point of a closed edge: ``u`` one
+    period from ``t`` on a periodic one, or ``t`` and ``u`` at its two ends where they meet
+    within ``tol``.
+
+    >>> import build123d as bd
+    >>> circle = ExactCurve(bd.Edge.make_circle(1.0))
+    >>> _one_point_of(circle, 1e-14, 2 * math.pi, 1e-7), _one_point_of(circle, 0.0, math.pi, 1e-7)
+    (True, False)
+    """
+    span = c.last - c.first
+    if abs(c.near(u, t) - t) <= 1e-9 * span:
+        return True
+    ends = sorted((t, u))
+    if abs(ends[0] - c.first) > 1e-9 * span or abs(ends[1] - c.last) > 1e-9 * span:
+        return False
+    return math.dist([float(x) for x in c.value(c.first)], [float(x) for x in c.value(c.last)]) <= tol
+
+
 def _sampled(ca: ExactCurve, cb: ExactCurve, ts: list[Any],
              guesses: list[Any]) -> tuple[list[Any], list[Any]]:
     """The closest parameters of ``b`` to ``a`` at ``ts`` (from ``guesses``) and their distances.
@@ -374,8 +395,8 @@ def arbitrate_overlap(
         for i in sorted(minima, key=lambda j: dists[j])[:6]:
             rt, ru, dist = _refine(ca, cb, ts[i], us[i])
             check = _point_check(ca, cb, rt, ru, dist, tol)
-            if ca is cb and abs(check.t - check.u) <= 1e-9 * (ca.last - ca.first):
-                continue  # one edge at one parameter: no double point
+            if ca is cb and _one_point_of(ca, check.t, check.u, tol):
+                continue  # one edge at one point (one parameter, or its closing point): no double point
             if check.holds and not any(abs(check.t - f.t) <= 1e-9 * (1 + abs(f.t)) for f in found):
                 found.append(check)
         if dmax <= tol:

@@ -36,6 +36,7 @@ from .arbiter import (
     PointCheck,
     _closest_u,
     _one_place,
+    _one_point_of,
     _rounding,
     arbitrate_overlap,
     arbitrate_point,
@@ -665,27 +666,6 @@ def _match_side(
                     verdict = _judge_point(check, claim, mine, theirs, k, tol, side, other, ca, cb)
                 disagreements.append(Disagreement(side, claim, counter, verdict))
     return agreed, disagreements
-
-
-def _one_point_of(c: ExactCurve, t: float, u: float, tol: float) -> bool:
-    """True when parameters ``t`` and ``u`` of one edge are one point of it, not a double point.
-
-    The same parameter (to 1e-9 of the range), or the closing point of a closed edge: ``u`` one
-    period from ``t`` on a periodic one, or ``t`` and ``u`` at its two ends where they meet
-    within ``tol``.
-
-    >>> import build123d as bd
-    >>> circle = ExactCurve(bd.Edge.make_circle(1.0))
-    >>> _one_point_of(circle, 1e-14, 2 * math.pi, 1e-7), _one_point_of(circle, 0.0, math.pi, 1e-7)
-    (True, False)
-    """
-    span = c.last - c.first
-    if abs(c.near(u, t) - t) <= 1e-9 * span:
-        return True
-    ends = sorted((t, u))
-    if abs(ends[0] - c.first) > 1e-9 * span or abs(ends[1] - c.last) > 1e-9 * span:
-        return False
-    return _pt_dist([float(x) for x in c.value(c.first)], [float(x) for x in c.value(c.last)]) <= tol
 
 
 def _one_stretch(claim: EdgeOverlap, pad: float) -> bool:
