@@ -96,7 +96,7 @@ from .errors import (
     NonFiniteError,
     ShapeError,
 )
-from .pieces import monotone_pieces
+from .pieces import along_chord, monotone_pieces
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
 from .space import intersect_space, space_pair
 from .tolerances import (
@@ -189,7 +189,10 @@ def _simple_piece(p: FloatArray) -> bool:
     """True when every chord ``p_j - p_i`` (i < j) lies in one open half-plane.
 
     Then the (rational) curve is monotone along some direction and cannot cross itself.
+    :func:`relief_cad.pieces.along_chord` decides most pieces first (its half-plane is the chord's).
     """
+    if along_chord(p.tolist()):
+        return True
     i, j = _chord_pairs(p.shape[0])
     v = p[j] - p[i]
     v = v[np.hypot(v[:, 0], v[:, 1]) > 0.0]

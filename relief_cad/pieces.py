@@ -15,6 +15,7 @@ halves are kept once they run one way along the line.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 
 import numpy as np
@@ -23,7 +24,44 @@ from ._kernels.certify import fold_bisect
 from ._types import FloatArray
 from .curves import RationalBezier
 
-__all__ = ["monotone_pieces"]
+__all__ = ["along_chord", "monotone_pieces"]
+
+# how far inside 90 degrees of the chord every chord must turn (as a cosine): far above rounding,
+# so that the angle test of a simple piece (widest gap of the chord angles above pi) passes too
+_ALONG_MARGIN = 1e-6
+
+
+def along_chord(points: list[list[float]]) -> bool:
+    """True when every chord ``p_j - p_i`` (``i < j``) of the planar ``points`` runs along ``p_n - p_0``.
+
+    "Along" is a positive dot product with the end-to-end chord beyond ``1e-6`` of the lengths'
+    product (within 90 degrees of it, less a margin); chords of length zero are left out, and a
+    closed polygon (``p_n == p_0``) is never along. Such a (rational, positive weights) curve is
+    monotone along its chord, so it cannot cross itself: a cheap sufficient test, on Python floats,
+    for the chords-in-a-half-plane test of the planar self-intersection (which then holds too, with
+    the chord's half-plane), where most of a sketch's spans are decided in microseconds.
+    ``points`` is a list of ``[x, y]`` (m >= 2).
+
+    >>> along_chord([[0.0, 0.0], [1.0, 1.0], [2.0, 1.0], [3.0, 0.0]])      # an arch
+    True
+    >>> along_chord([[0.0, 0.0], [3.0, 1.0], [-1.0, 1.0], [2.0, 0.0]])     # a loop: it crosses itself
+    False
+    """
+    x0, y0 = points[0]
+    dx = points[-1][0] - x0
+    dy = points[-1][1] - y0
+    dlen = math.hypot(dx, dy)
+    if not dlen > 0.0:
+        return False
+    for i, (xi, yi) in enumerate(points):
+        for xj, yj in points[i + 1:]:
+            vx = xj - xi
+            vy = yj - yi
+            if vx == 0.0 and vy == 0.0:
+                continue
+            if not vx * dx + vy * dy > _ALONG_MARGIN * math.hypot(vx, vy) * dlen:
+                return False
+    return True
 
 
 def _line_of(p: FloatArray, tol: float) -> FloatArray | None:

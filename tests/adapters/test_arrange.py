@@ -227,6 +227,22 @@ def test_self_intersection_of_one_edge_is_cut():
     assert len(arrange(eight)) >= 1
 
 
+def test_loops_among_many_arches_are_cut_and_the_arches_are_not():
+    """Many edges take the one-pass path, which skips the self-intersection of every span running
+    along its chord (the arches): the loops, whose crossing spans do not, are still cut there: a
+    spline's between two spans, a Bezier curve's within its one span."""
+    arches = [bd.Edge.make_spline([(3 * k, 5), (3 * k + 1, 6.5), (3 * k + 2, 6)]) for k in range(6)]
+    loops = [bd.Edge.make_spline([(0, 0), (2, 1), (2, -1), (0, 1)]),
+             bd.Edge.make_bezier((10, 0), (13, 1), (9, 1), (12, 0))]
+    pieces = arrange(arches + loops)
+    assert len(pieces) == len(arches) + 6  # each arch whole; each loop in three, through one vertex
+    assert_connected(pieces)
+    for k in range(2):
+        loop_ends = [v for p in pieces[len(arches) + 3 * k:][:3] for v in ends(p)]
+        assert sum(v.IsSame(loop_ends[1]) for v in loop_ends) == 4  # the crossing: 4 piece ends
+    assert len(arrange(arches + loops, faces=True)) == 2
+
+
 def test_inputs_are_not_modified():
     a, b = line((0, 0, 0), (2, 2, 0)), line((0, 2, 0), (2, 0, 0))
     before = [BRep_Tool.Tolerance_s(v) for v in ends(a)] + [BRep_Tool.Range_s(a)]
