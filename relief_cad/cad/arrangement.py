@@ -78,6 +78,7 @@ class _Cut:
     edge: int
     t: float
     point: tuple[float, float, float]
+    on_edge: bool = False  # the point is the edge's own at t (an end), not an intersection's
 
 
 @dataclass
@@ -167,7 +168,7 @@ def _add_ends(graph: _Graph) -> None:
             continue
         t0, t1 = BRep_Tool.Range_s(edge)
         for t, v in ((t0, TopExp.FirstVertex_s(edge)), (t1, TopExp.LastVertex_s(edge))):
-            graph.cuts.append(_Cut(k, t, values(k, t)))
+            graph.cuts.append(_Cut(k, t, values(k, t), True))
             if v.IsNull():
                 continue
             index = vmap.Add(v)
@@ -197,7 +198,8 @@ def _vertices(graph: _Graph, values: _Values) -> tuple[np.ndarray, list[Any], np
     points = np.array([c.point for c in graph.cuts], dtype=np.float64).reshape(-1, 3)
     labels = cluster_points(points, graph.tol, links=graph.links)
     n = int(labels.max()) + 1 if labels.shape[0] else 0
-    on_curve = np.array([values(c.edge, c.t) for c in graph.cuts], dtype=np.float64).reshape(-1, 3)
+    on_curve = np.array([c.point if c.on_edge else values(c.edge, c.t) for c in graph.cuts],
+                        dtype=np.float64).reshape(-1, 3)
     sums = np.zeros((n, 3))
     np.add.at(sums, labels, on_curve)
     centres = sums / np.bincount(labels, minlength=n)[:, None]
@@ -278,7 +280,7 @@ def _make_piece(curve: Any, trsf: Any, v1: Any, v2: Any, t1: float, t2: float) -
 class _Piece:
     edge: TopoDS_Edge
     nodes: tuple[int, int]
-    mid: tuple[float, float, float]
+    mid_at: tuple[int, float]  # (input edge, its parameter) of the piece's middle: a point for _same_piece
     curve: Any
     t: tuple[float, float]
     twin: bool = False  # the edge of an earlier piece (an overlap), reused
@@ -297,22 +299,26 @@ def _edge_pieces(k: int, graph: _Graph, places: list[tuple[float, int]], vertice
     for t, node in places[1:]:
         if t - start_t <= eps:
             continue  # one parameter, one place (merged with its neighbour as one vertex)
-        mid = values(k, 0.5 * (start_t + t))
-        if node == start_n and math.dist(mid, centres[node]) <= graph.tol:
+        mid = 0.5 * (start_t + t)
+        if node == start_n and math.dist(values(k, mid), centres[node]) <= graph.tol:
             continue  # a sliver from a vertex back to itself: no piece
         piece = _make_piece(curve, trsf, vertices[start_n], vertices[node], start_t, t)
-        pieces.append(_Piece(piece, (start_n, node), mid, curve, (start_t, t)))
+        pieces.append(_Piece(piece, (start_n, node), (k, mid), curve, (start_t, t)))
         start_t, start_n = t, node
     return pieces
 
 
-def _same_piece(p: _Piece, q: _Piece, tol: float) -> bool:
-    """True when two pieces between the same vertices lie on each other (an overlap)."""
+def _same_piece(p: _Piece, q: _Piece, tol: float, values: _Values) -> bool:
+    """True when two pieces between the same vertices lie on each other (an overlap).
+
+    Each piece's middle point is found here, when a piece between the same vertices came
+    before: most pieces never need it.
+    """
     for piece, other in ((p, q), (q, p)):
         edge = other.edge
         loc_curve = BRep_Tool.Curve_s(edge, TopLoc_Location(), 0.0, 0.0)
         lo, hi = BRep_Tool.Range_s(edge)
-        proj = GeomAPI_ProjectPointOnCurve(gp_Pnt(*piece.mid), loc_curve, lo, hi)
+        proj = GeomAPI_ProjectPointOnCurve(gp_Pnt(*values(*piece.mid_at)), loc_curve, lo, hi)
         if proj.NbPoints() == 0 or proj.LowerDistance() > tol:
             return False
     return True
@@ -331,14 +337,14 @@ def _pieces(graph: _Graph) -> tuple[list[list[_Piece]], list[Any], np.ndarray]:
         pieces = [] if k in graph.skip else _edge_pieces(k, graph, places[k], vertices, centres, values)
         for n, piece in enumerate(pieces):
             key = (min(piece.nodes), max(piece.nodes))
-            twin = next((q for q in by_nodes.get(key, []) if _same_piece(piece, q, graph.tol)), None)
+            twin = next((q for q in by_nodes.get(key, []) if _same_piece(piece, q, graph.tol, values)), None)
             if twin is None:
                 by_nodes.setdefault(key, []).append(piece)
             else:
                 closed = twin.nodes[0] == twin.nodes[1]
                 reverse = twin.nodes != piece.nodes or (closed and not _same_way(twin, piece))
                 shared = downcast_edge(twin.edge.Reversed()) if reverse else twin.edge
-                pieces[n] = _Piece(shared, piece.nodes, piece.mid, twin.curve, twin.t, twin=True)
+                pieces[n] = _Piece(shared, piece.nodes, piece.mid_at, twin.curve, twin.t, twin=True)
         out.append(pieces)
     return out, vertices, centres
 
