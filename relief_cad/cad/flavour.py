@@ -86,7 +86,8 @@ def wrap_edges(edges: list[Any], flavour: str) -> Any:
     >>> wrap_edges([], "build123d")
     []
     """
-    out = [wrap_edge(e, flavour) for e in edges]
-    if flavour == "build123d":
-        return native_library(flavour).ShapeList(out)
-    return out
+    lib = native_library(flavour)  # once, not per edge: arrangements return tens of thousands
+    if lib is None:
+        return list(edges)
+    out = [lib.Edge(e) for e in edges]
+    return lib.ShapeList(out) if flavour == "build123d" else out
