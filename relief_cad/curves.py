@@ -222,6 +222,24 @@ class RationalBezier:
         return obj
 
     @classmethod
+    def _rebuilt(cls, pts: FloatArray, w: FloatArray) -> RationalBezier:
+        """``RationalBezier(pts, w)`` for a valid curve's own ``control_points`` and ``weights``.
+
+        The rows the constructor makes (``pts * w``, then ``w``) and the same arrays, without the
+        checks the arrays passed when their curve was built; rows that overflow go through the
+        constructor, which refuses them.
+        """
+        h = np.empty((pts.shape[0], pts.shape[1] + 1))
+        with np.errstate(over="ignore", invalid="ignore"):
+            h[:, :-1] = pts * w[:, None]
+        h[:, -1] = w
+        if not np.isfinite(h).all():
+            return cls(pts, w)
+        obj = cls.__new__(cls)
+        obj._set(h, pts, w)
+        return obj
+
+    @classmethod
     def from_homogeneous(cls, homogeneous: PointsLike) -> RationalBezier:
         """Build a curve from homogeneous control points ``[w_i V_i, w_i]``.
 

@@ -173,7 +173,7 @@ def _intersect_planar(hA: FloatArray, hB: FloatArray | None, tol: float,
     """
     pa, wa = _split_homogeneous(hA, "hA")
     if hB is None:
-        return _self_planar(pa, wa, tol, budget)
+        return _self_planar(RationalBezier(pa, wa), tol, budget)
     pb, wb = _split_homogeneous(hB, "hB")
     return _planar(pa, wa, pb, wb, tol, budget)
 
@@ -204,9 +204,8 @@ def _simple_piece(p: FloatArray) -> bool:
     return widest > np.pi + 1e-12
 
 
-def _self_planar(p: FloatArray, w: FloatArray, tol: float, budget: int) -> IntersectionList:
+def _self_planar(curve: RationalBezier, tol: float, budget: int) -> IntersectionList:
     """Self-intersections: split into monotone pieces, intersect pairs of pieces."""
-    curve = RationalBezier(p, w)
     pieces = monotone_pieces(curve, tol, _simple_piece, 10)
     items: list[Result] = []
     boxes: list[ParameterBox] = []
@@ -310,7 +309,9 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
             result: IntersectionList = intersect_space(a, b, tol=tol, budget=budget, on_budget=on_budget)
             return result
         ftol = resolve_tolerance(check_tol(tol), a)
-        return finish(_with_tol(_self_planar(a.control_points, a.weights, ftol, nbudget), ftol), on_budget)
+        # the curve of a's own points and weights, as built from them (the same rows for every a)
+        curve = RationalBezier._rebuilt(a.control_points, a.weights)
+        return finish(_with_tol(_self_planar(curve, ftol, nbudget), ftol), on_budget)
     # the default, or the given tol raised to the data's rounding level (one rule: resolve_tolerance;
     # _sampled_tolerance is its compiled default for two curves)
     ftol = (_sampled_tolerance((a, b)) if tol is None else None) or resolve_tolerance(check_tol(tol), a, b)
