@@ -250,3 +250,21 @@ def test_compiled_de_casteljau_gives_the_exact_values_on_dyadic_data() -> None:
             exact_value, exact_deriv = _decasteljau(exact_h, exact_t)
             assert value.tolist() == exact_value.astype(float).tolist(), (degree, dim)
             assert deriv.tolist() == exact_deriv.astype(float).tolist(), (degree, dim)
+
+
+@settings(max_examples=200, deadline=None)
+@given(curves(dim=2))
+def test_a_curve_rebuilt_from_its_own_arrays_is_the_constructors_to_the_bit(c: RationalBezier) -> None:
+    """``_rebuilt`` (the self-intersection's copy of a curve) skips the checks, nothing else."""
+    made = RationalBezier(c.control_points, c.weights)
+    rebuilt = RationalBezier._rebuilt(c.control_points, c.weights)
+    assert rebuilt.homogeneous.tobytes() == made.homogeneous.tobytes()
+    assert rebuilt.control_points.tobytes() == made.control_points.tobytes()
+    assert rebuilt.weights.tobytes() == made.weights.tobytes()
+    assert not rebuilt.homogeneous.flags.writeable
+
+
+def test_rebuilt_rows_that_overflow_go_through_the_constructors_check() -> None:
+    pts = np.array([[0.0, 0.0], [1e300, 1.0]])
+    with pytest.raises(NonFiniteError):
+        RationalBezier._rebuilt(pts, np.array([1.0, 1e10]))
