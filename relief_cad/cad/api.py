@@ -166,6 +166,7 @@ class _EdgeInfo:
     _curves2d: dict[int, RationalBezier] | None = None
     _packed: _Packed | None = None  # see _planar_arrays
     _vertices: tuple[Any, Any] | None = None
+    _marks: list[tuple[Any, tuple[float, float, float], float]] | None = None
 
     @property
     def vertices(self) -> tuple[Any, Any]:
@@ -173,6 +174,14 @@ class _EdgeInfo:
         if self._vertices is None:
             self._vertices = (TopExp.FirstVertex_s(self.edge), TopExp.LastVertex_s(self.edge))
         return self._vertices
+
+    @property
+    def vertex_marks(self) -> list[tuple[Any, tuple[float, float, float], float]]:
+        """``(vertex, point, tolerance)`` of the first and last vertex (null ones left out), on demand."""
+        if self._marks is None:
+            self._marks = [(v, BRep_Tool.Pnt_s(v).Coord(), BRep_Tool.Tolerance_s(v))
+                           for v in self.vertices if not v.IsNull()]
+        return self._marks
 
 
 def _prepare(shape: Any, name: str) -> list[_EdgeInfo]:
@@ -915,14 +924,15 @@ def _inside(o: _Raw, r: _Raw, tol: float) -> bool:
 
 
 def _shared_vertex_contact(r: _Raw, tol: float) -> bool:
-    """True for the contact at a vertex joining two distinct edges (self-intersection mode)."""
-    ea, eb = r.ea, r.eb
-    for va in ea.vertices:
-        for vb in eb.vertices:
-            if _is_same_vertex(va, vb):
-                p = BRep_Tool.Pnt_s(va).Coord()
-                if math.dist(p, r.point) <= max(tol, BRep_Tool.Tolerance_s(va)):
-                    return True
+    """True for the contact at a vertex joining two distinct edges (self-intersection mode).
+
+    The contact must lie within tol (or the vertex's own tolerance) of a vertex of ``a`` that is
+    also one of ``b``'s; the distance, on cached floats, is tested first: most crossings are far
+    from every vertex, and are told so without a call into OCCT.
+    """
+    for va, p, vtol in r.ea.vertex_marks:
+        if math.dist(p, r.point) <= max(tol, vtol) and any(va.IsSame(vb) for vb, _, _ in r.eb.vertex_marks):
+            return True
     return False
 
 
