@@ -436,9 +436,10 @@ def _no_self_job(e: _EdgeInfo, i: int, planar: bool) -> bool:
     control points running along their chord (:func:`relief_cad.pieces.along_chord`: the core's
     test of a piece that cannot meet itself then passes on the whole segment, which is then one
     piece with no pair to intersect). Most free-form spans of glyphs and sketches pass the second
-    in about 1.3 us, where the core's self-intersection call took about 50 us (the planar curve
-    built, the tolerance resolved, the pieces cut) to answer nothing: a quarter of the time of
-    ``arrange`` on 5,000 glyph edges.
+    in about 1.3 us, where the self job takes about 28 us (the planar curve built, the tolerance
+    resolved, the pieces cut) to answer nothing; it took 50 us, a quarter of the time of
+    ``arrange`` on 5,000 glyph edges, before the core's self-intersection stopped checking its
+    curve again.
     """
     if _cannot_cross_itself(e.rows[i]):
         return True
