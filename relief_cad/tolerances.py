@@ -46,6 +46,7 @@ __all__ = [
     "default_tolerance",
     "is_point_like",
     "resolve_tolerance",
+    "floor_of_magnitude",
     "rounding_floor",
     "size_of",
 ]
@@ -355,6 +356,20 @@ def rounding_floor(*curves: RationalBezier | FloatArray) -> float:
     True
     """
     return _floor(_extent(curves)[1])
+
+
+def floor_of_magnitude(big: float) -> float:
+    """The rounding floor of data whose largest coordinate magnitude is ``big`` (model units).
+
+    :func:`rounding_floor` from the magnitude alone, for callers that keep box corners as
+    floats: ``rounding_floor(points) == floor_of_magnitude(max |x|)`` to the bit.
+
+    >>> floor_of_magnitude(2.0) == ROUNDING_ULPS * _EPS * 2.0
+    True
+    >>> floor_of_magnitude(0.0)  # never zero
+    1e-300
+    """
+    return _floor(big)
 
 
 def _floor(big: float) -> float:

@@ -54,7 +54,7 @@ from ..errors import InvalidInputError
 from ..intersection import DEFAULT_BUDGET
 from ..pieces import along_chord
 from ..results import Intersection, Overlap
-from ..tolerances import ModelTolerance, default_tolerance, rounding_floor
+from ..tolerances import ModelTolerance, default_tolerance, floor_of_magnitude, rounding_floor
 from . import ocp
 from ._checks import check_model_tol, check_tol
 from .flavour import flavour_of, wrap_edge, wrap_edges, wrap_vertices
@@ -865,7 +865,7 @@ def _span_at(e: _EdgeInfo, t: float) -> float:
 
 def _pair_floor(p: _Raw) -> float:
     """The rounding floor of the control points of both edges of contact ``p`` (from their boxes)."""
-    return rounding_floor(np.array([p.ea.lo, p.ea.hi, p.eb.lo, p.eb.hi]))
+    return floor_of_magnitude(max(map(abs, (*p.ea.lo, *p.ea.hi, *p.eb.lo, *p.eb.hi))))
 
 
 def _stretch_within(p: _Raw, q: _Raw, tol: float) -> bool:

@@ -26,6 +26,7 @@ from relief_cad.space import relief_scheme
 from relief_cad.tolerances import (
     MAX_TOLERANCE_FRACTION,
     default_tolerance,
+    floor_of_magnitude,
     rounding_floor,
     size_of,
 )
@@ -44,6 +45,18 @@ def _check_tol_used(res, given, *cs) -> None:
     assert res.tol_used >= floor
     for r in res.points:
         assert r.distance <= res.tol_used, (r, res.tol_used)
+
+
+_COORD = st.one_of(st.floats(-1e300, 1e300), st.sampled_from([0.0, -0.0, 5e-324, -5e-324, 1e-310]))
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(_COORD, _COORD, _COORD), min_size=1, max_size=6))
+def test_floor_of_magnitude_is_the_rounding_floor_of_the_points(points) -> None:
+    # the CAD layer takes the floor of two edges' boxes from their corners' largest magnitude
+    expected = rounding_floor(np.array(points, dtype=float))
+    assert floor_of_magnitude(max(abs(x) for p in points for x in p)) == expected
+    assert expected >= 1e-300
 
 
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
