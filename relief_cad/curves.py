@@ -30,7 +30,7 @@ import numpy as np
 
 from ._checks import as_real_array, check_count, check_degree, check_finite, check_param, check_weights
 from ._kernels.batch import kernel_views
-from ._kernels.bezier import bernstein_product, decasteljau_rows
+from ._kernels.bezier import bernstein_product, decasteljau_rows, split_rows
 from ._types import FloatArray, ParamsLike, PointsLike
 from .errors import (
     DegenerateCurveError,
@@ -495,17 +495,7 @@ class RationalBezier:
         tv = check_param(t, "split parameter t")
         if not (0.0 < tv < 1.0):
             raise DegenerateCurveError(f"split parameter should lie in (0, 1), not {t!r}")
-        h = self._h
-        n = self.degree
-        left = np.empty_like(h)
-        right = np.empty_like(h)
-        b = h.copy()
-        left[0] = b[0]
-        right[n] = b[n]
-        for r in range(1, n + 1):
-            b[: n + 1 - r] = (1.0 - tv) * b[: n + 1 - r] + tv * b[1 : n + 2 - r]
-            left[r] = b[0]
-            right[n - r] = b[n - r]
+        left, right = split_rows(self._h, tv)  # compiled de Casteljau rounds
         return RationalBezier._trusted(left), RationalBezier._trusted(right)
 
     def segment(self, t0: float, t1: float) -> RationalBezier:

@@ -88,6 +88,27 @@ def test_split_preserves_geometry(c: RationalBezier, t: float) -> None:
     assert np.array_equal(left.control_points[-1], right.control_points[0])
 
 
+def _split_by_rounds(h: np.ndarray, t: float) -> tuple[np.ndarray, np.ndarray]:
+    """De Casteljau's rounds on whole rows with numpy: the form the compiled split replaced."""
+    n = h.shape[0] - 1
+    left, right, b = np.empty_like(h), np.empty_like(h), h.copy()
+    left[0], right[n] = b[0], b[n]
+    for r in range(1, n + 1):
+        b[: n + 1 - r] = (1.0 - t) * b[: n + 1 - r] + t * b[1 : n + 2 - r]
+        left[r], right[n - r] = b[0], b[n - r]
+    return left, right
+
+
+@settings(max_examples=200)
+@given(curves(), st.floats(1e-12, 1.0 - 1e-12))
+def test_split_gives_the_bits_of_de_casteljau_rounds_on_whole_rows(c: RationalBezier, t: float) -> None:
+    # the split is compiled (relief_cad._kernels.bezier.split_rows): the same operations in the same
+    # order as the numpy rounds, so self-intersections cut their pieces exactly as before
+    left, right = c.split(t)
+    ref_left, ref_right = _split_by_rounds(c.homogeneous, t)
+    assert np.array_equal(left.homogeneous, ref_left) and np.array_equal(right.homogeneous, ref_right)
+
+
 @settings(max_examples=60)
 @given(curves(), st.floats(0.0, 1.0), st.floats(0.0, 1.0))
 def test_segment_any_interval_including_reversed(c: RationalBezier, t0: float, t1: float) -> None:
