@@ -336,10 +336,15 @@ def _pieces(graph: _Graph) -> tuple[list[list[_Piece]], list[Any], np.ndarray]:
     for k in range(len(graph.edges)):
         pieces = [] if k in graph.skip else _edge_pieces(k, graph, places[k], vertices, centres, values)
         for n, piece in enumerate(pieces):
-            key = (min(piece.nodes), max(piece.nodes))
-            twin = next((q for q in by_nodes.get(key, []) if _same_piece(piece, q, graph.tol, values)), None)
+            a, b = piece.nodes
+            key = (a, b) if a <= b else (b, a)
+            earlier = by_nodes.get(key)
+            if earlier is None:  # most pieces: the first between their vertices
+                by_nodes[key] = [piece]
+                continue
+            twin = next((q for q in earlier if _same_piece(piece, q, graph.tol, values)), None)
             if twin is None:
-                by_nodes.setdefault(key, []).append(piece)
+                earlier.append(piece)
             else:
                 closed = twin.nodes[0] == twin.nodes[1]
                 reverse = twin.nodes != piece.nodes or (closed and not _same_way(twin, piece))
