@@ -31,7 +31,7 @@ from typing import TYPE_CHECKING, Union, cast
 import numpy as np
 from numpy.typing import NDArray
 
-from ._kernels.bezier import pair_tolerances, pairs_tolerances, sampled_tolerance
+from ._kernels.bezier import max_abs, pair_tolerances, pairs_tolerances, sampled_tolerance
 from ._types import FloatArray
 
 if TYPE_CHECKING:
@@ -318,6 +318,9 @@ def resolve_tolerance(tol: float | None, *curves: RationalBezier | FloatArray) -
     """
     if tol is None:
         return default_tolerance(*curves)
+    if isinstance(tol, ModelTolerance) and not any(isinstance(c, np.ndarray) for c in curves):
+        # a model's tolerance is never capped, so only the floor is needed: the largest |x|, compiled
+        return max(tol, _floor(max(max_abs(_points_of(c), 3) for c in curves)))
     size, big = _extent(curves)
     floor = _floor(big)
     limit = MAX_TOLERANCE_FRACTION * size

@@ -25,8 +25,10 @@ from relief_cad.errors import BudgetExceededError, InputTypeError, ReliefCadErro
 from relief_cad.space import relief_scheme
 from relief_cad.tolerances import (
     MAX_TOLERANCE_FRACTION,
+    ModelTolerance,
     default_tolerance,
     floor_of_magnitude,
+    resolve_tolerance,
     rounding_floor,
     size_of,
 )
@@ -57,6 +59,18 @@ def test_floor_of_magnitude_is_the_rounding_floor_of_the_points(points) -> None:
     expected = rounding_floor(np.array(points, dtype=float))
     assert floor_of_magnitude(max(abs(x) for p in points for x in p)) == expected
     assert expected >= 1e-300
+
+
+@settings(max_examples=100, deadline=None)
+@given(curves(dim=2, max_degree=6), curves(dim=3, max_degree=6),
+       st.sampled_from([5e-324, 1e-300, 1e-12, 1e-7, 1.0, 1e300]))
+def test_a_model_tolerance_is_raised_to_the_floor_only(a: RationalBezier, b: RationalBezier, tol) -> None:
+    # a model's tolerance takes the compiled floor (largest |x|) and no cap; the same value as the
+    # floor from the curves' full extent
+    model = ModelTolerance(tol)
+    assert resolve_tolerance(model, a) == max(tol, rounding_floor(a))
+    assert resolve_tolerance(model, a, b) == max(tol, rounding_floor(a, b))
+    assert resolve_tolerance(model, b, a.control_points) == max(tol, rounding_floor(b, a.control_points))
 
 
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
