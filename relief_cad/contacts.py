@@ -689,11 +689,13 @@ def _singular_end(c: RationalBezier, t: float) -> bool:
     """
     if t != 0.0 and t != 1.0:
         return False
-    pts = c.control_points
-    i, j = (0, 1) if t == 0.0 else (-1, -2)
-    if np.all(pts[i] == pts[j]):
+    rows = c.control_points.tolist()  # Python floats: the same differences and maxima as numpy's, faster
+    p, q = (rows[0], rows[1]) if t == 0.0 else (rows[-1], rows[-2])
+    if p == q:
         return True
-    return bool(np.abs(pts[j] - pts[i]).max() <= _SINGULAR * np.abs(pts - pts[i]).max())
+    lead: float = max(abs(y - x) for x, y in zip(p, q, strict=True))
+    spread: float = max(abs(y - x) for row in rows for x, y in zip(p, row, strict=True))
+    return lead <= _SINGULAR * spread
 
 
 def whole_overlap(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap | None:

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from relief_cad import RationalBezier, intersect, intersect_many
-from relief_cad.contacts import _double_root, _foot, curve_direction, refine_self
+from relief_cad.contacts import _SINGULAR, _double_root, _foot, _singular_end, curve_direction, refine_self
 from relief_cad.results import Intersection, Overlap
 
 
@@ -237,3 +237,37 @@ def test_a_curve_running_out_and_back_and_its_rounded_copy_coincide_either_way(
         found = intersect(x, y)
         assert [type(r).__name__ for r in found] == ["Overlap"], found
         assert found[0].t == (0.0, 1.0)
+
+
+def _singular_end_by_numpy(c: RationalBezier, t: float) -> bool:
+    """The rule of a singular end on whole numpy rows (the form the Python-float test replaced)."""
+    pts = c.control_points
+    i, j = (0, 1) if t == 0.0 else (-1, -2)
+    if np.all(pts[i] == pts[j]):
+        return True
+    return bool(np.abs(pts[j] - pts[i]).max() <= _SINGULAR * np.abs(pts - pts[i]).max())
+
+
+def test_a_singular_end_is_decided_as_on_numpy_rows() -> None:
+    """Repeated end points, legs around 1e-9 of the size (either side of the rule), and plain ends.
+
+    The test runs on Python floats (it decides every end meeting of the CAD layer's core calls);
+    the differences and maxima are exact, so every answer must be numpy's.
+    """
+    rng = np.random.default_rng(20261205)
+    answers = []
+    for _ in range(4000):
+        n, d = int(rng.integers(1, 8)), int(rng.integers(2, 4))
+        p = rng.normal(size=(n + 1, d)) * 10.0 ** rng.uniform(-6, 6)
+        end, leg = (0, 1) if rng.random() < 0.5 else (-1, -2)
+        kind = rng.integers(0, 3)
+        if kind == 1:
+            p[leg] = p[end]
+        elif kind == 2:
+            p[leg] = p[end] + rng.normal(size=d) * 1e-9 * np.abs(p - p[end]).max() * rng.uniform(0.0, 2.0)
+        c = RationalBezier(p, rng.uniform(0.2, 5.0, n + 1))
+        for t in (0.0, 1.0):
+            assert _singular_end(c, t) == _singular_end_by_numpy(c, t), (p.tolist(), t)
+            answers.append(_singular_end(c, t))
+    assert 1000 < sum(answers) < len(answers) - 1000  # both answers, many times
+    assert not _singular_end(RationalBezier([[0.0, 0.0], [0.0, 0.0], [1.0, 1.0]]), 0.5)
