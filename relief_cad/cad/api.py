@@ -167,6 +167,7 @@ class _EdgeInfo:
     _packed: _Packed | None = None  # see _planar_arrays
     _vertices: tuple[Any, Any] | None = None
     _marks: list[tuple[Any, tuple[float, float, float], float]] | None = None
+    _stalls: tuple[float, list[bool], list[tuple[float, float]]] | None = None  # see _stalls
 
     @property
     def vertices(self) -> tuple[Any, Any]:
@@ -391,9 +392,9 @@ def _pair_jobs(
         candidates = box_pairs_between(ea.lows, ea.highs, eb.lows, eb.highs, pad=tol).tolist()
     for ii, jj in candidates:
         i, j = int(ii), int(jj)
-        if same and j < i:
-            continue
-        if same and i == j and _no_self_job(ea, i, planar):
+        if (same and j < i) or (_stalls(ea, tol)[0][i] and _stalls(eb, tol)[0][j]):
+            continue  # two spans that are each one point within tol: see _stalls
+        if same and i == j and _no_self_job(ea, i, planar, tol):
             continue
         if planar and not (same and i == j):
             jobs.append(_Job(ea, eb, i, j, None, None, True))
@@ -408,6 +409,74 @@ def _pair_jobs(
             ca, cb = sa.curve, sb.curve
         jobs.append(_Job(ea, eb, i, j, ca, None if (same and i == j) else cb))
     return jobs
+
+
+def _stalls(e: _EdgeInfo, tol: float) -> tuple[list[bool], list[tuple[float, float]]]:
+    """Where edge ``e`` stands still within ``tol``: per segment, whether it is one point; the stalls.
+
+    A segment is one point when the diagonal of its control points' box is at most ``tol`` (model
+    units). A stall is a run of such consecutive segments whose joint box stays within ``tol``,
+    as the edge parameters ``(first, last)`` it covers. B-splines have them where poles repeat
+    (up to rounding): build123d's periodic ``make_spline`` through some point sets gives a curve
+    standing still over a quarter of its range, in 50 spans or more.
+
+    Two segments that are each one point are never intersected with each other (one point within
+    tol of another is met from the segments that move on at the stall's ends; an edge with no
+    segment that moves, a sliver shorter than tol, has no stall), and a contact of an
+    edge with itself inside one stall is no self-intersection (:func:`_clean_pair`): it is the
+    edge's one passage there. Intersected, every pair of such spans was an overlap of the edge with
+    itself, 1,000s of them from one spline, and ``arrange`` clustered their cuts for minutes.
+    Computed once per edge and tolerance; most edges have no such segment.
+    """
+    cached = e._stalls
+    if cached is not None and cached[0] == tol:
+        return cached[1], cached[2]
+    flags = [math.dist(lo, hi) <= tol for lo, hi in zip(e.lows, e.highs, strict=True)]
+    if all(flags):  # an edge within tol of a point in all (a sliver): no segment that moves on
+        flags = [False] * len(flags)
+    runs: list[tuple[float, float]] = []
+    i, n = 0, len(flags)
+    while i < n:
+        if not flags[i]:
+            i += 1
+            continue
+        lo: tuple[float, ...] = e.lows[i]
+        hi: tuple[float, ...] = e.highs[i]
+        j = i
+        while j + 1 < n and flags[j + 1]:
+            wider_lo, wider_hi = tuple(map(min, lo, e.lows[j + 1])), tuple(map(max, hi, e.highs[j + 1]))
+            if math.dist(wider_lo, wider_hi) > tol:
+                break
+            lo, hi, j = wider_lo, wider_hi, j + 1
+        runs.append((e.segs[i].t0, e.segs[j].t1))
+        i = j + 1
+    e._stalls = (tol, flags, runs)
+    return flags, runs
+
+
+def _in_one_stall(e: _EdgeInfo, t: float, u: float, tol: float) -> bool:
+    """True when parameters ``t`` and ``u`` of edge ``e`` lie in one of its stalls (:func:`_stalls`)."""
+    lo, hi = min(t, u), max(t, u)
+    return any(a <= lo and hi <= b for a, b in _stalls(e, tol)[1])
+
+
+def _stall_passage(e: _EdgeInfo, t: float, u: float, point: _Point3, tol: float) -> bool:
+    """True when edge ``e`` meets itself at ``(t, u)`` only by standing still there (:func:`_stalls`).
+
+    ``[t, u]`` reaches into a stall, and the edge stays within ``tol`` of the contact ``point``
+    from ``t`` and from ``u`` to the stall: it slows down into the stall and leaves it as one
+    passage (a spline 1.7e-4 of a span before its stall is 1e-8 from it). Five samples of each
+    stretch outside the stall, as :func:`_stretch_within` proves a stretch by samples.
+    """
+    lo, hi = min(t, u), max(t, u)
+    for a, b in _stalls(e, tol)[1]:
+        if hi < a or lo > b:
+            continue
+        outside = [(s0, s1) for s0, s1 in ((lo, a), (b, hi)) if s0 < s1]
+        if all(math.dist(ocp.edge_value(e.edge, s0 + f * (s1 - s0)), point) <= tol
+               for s0, s1 in outside for f in (0.0, 0.25, 0.5, 0.75, 1.0)):
+            return True
+    return False
 
 
 def _cannot_cross_itself(rows: list[list[float]]) -> bool:
@@ -429,7 +498,7 @@ def _cannot_cross_itself(rows: list[list[float]]) -> bool:
     return dot >= 0.0 or cross > 1e-9 * math.hypot(*a) * math.hypot(*b)
 
 
-def _no_self_job(e: _EdgeInfo, i: int, planar: bool) -> bool:
+def _no_self_job(e: _EdgeInfo, i: int, planar: bool, tol: float) -> bool:
     """True when segment ``i`` of edge ``e`` cannot cross itself, so that its self job would find nothing.
 
     :func:`_cannot_cross_itself` on its rows, or, in the common frame (``planar``), its planar
@@ -441,7 +510,7 @@ def _no_self_job(e: _EdgeInfo, i: int, planar: bool) -> bool:
     ``arrange`` on 5,000 glyph edges, before the core's self-intersection stopped checking its
     curve again.
     """
-    if _cannot_cross_itself(e.rows[i]):
+    if _cannot_cross_itself(e.rows[i]) or _stalls(e, tol)[0][i]:
         return True
     if not planar:
         return False
@@ -732,6 +801,8 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
         u0, u1 = r.u
         if t0 > t1:
             t0, t1, u0, u1 = t1, t0, u1, u0
+        if same and _in_one_stall(ea, min(t0, u0, u1), max(t1, u0, u1), tol):
+            continue  # the edge standing still within tol: no overlap with itself (_stalls)
         r = _Raw(ea, eb, (t0, t1), (u0, u1), r.point, "overlap", 0.0)
         if merged:
             prev = merged[-1]
@@ -751,7 +822,7 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
         if same:
             # the same point of one edge (a segment joint), or the closing point of a closed edge
             span = max(1.0, abs(ea.last - ea.first))
-            if abs(t - u) <= ptol * span:
+            if abs(t - u) <= ptol * span or _stall_passage(ea, t, u, r.point, tol):
                 continue
             if _is_same_vertex(ea.vertices[0], ea.vertices[1]) and (
                 (_at_end(ea, t, 0, ptol) and _at_end(ea, u, 1, ptol))
@@ -981,12 +1052,14 @@ def _model_jobs(
     if self_mode:
         pairs = box_pairs(lo, hi, pad=tol)
         selves = [(k, i) for k, e in enumerate(infos_a) for i in range(len(e.rows))
-                  if not _no_self_job(e, i, True)]
+                  if not _no_self_job(e, i, True, tol)]
     else:
         na = sum(len(e.lows) for e in infos_a)
         pairs = box_pairs_between(lo[:na], hi[:na], lo[na:], hi[na:], pad=tol)
         pairs[:, 1] += na
         selves = []
+    point = np.array([f for e in everyone for f in _stalls(e, tol)[0]], dtype=bool).reshape(-1)
+    pairs = pairs[~(point[pairs[:, 0]] & point[pairs[:, 1]])]  # never two one-point spans (_stalls)
     ga, gb = pairs[:, 0], pairs[:, 1]
     order = np.lexsort((seg[gb], seg[ga], edge[gb], edge[ga]))
     pairs = pairs[order]

@@ -55,8 +55,11 @@ try:
     from OCP.BRepAdaptor import BRepAdaptor_Curve
     from OCP.BRepBndLib import BRepBndLib
     from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeFace
+    from OCP.BRepGProp import BRepGProp
+    from OCP.GCPnts import GCPnts_AbscissaPoint
     from OCP.GeomAPI import GeomAPI_ProjectPointOnCurve
     from OCP.gp import gp_Ax3, gp_Dir, gp_Pln, gp_Pnt
+    from OCP.GProp import GProp_GProps
     from OCP.Precision import Precision
     from OCP.TopAbs import TopAbs_EDGE, TopAbs_FORWARD
     from OCP.TopExp import TopExp
@@ -99,6 +102,9 @@ class _Graph:
 
     def __post_init__(self) -> None:
         self.values = _Values(self.edges)
+
+
+_EPS = float(np.finfo(np.float64).eps)
 
 
 @contextmanager
@@ -214,8 +220,11 @@ def _vertices(graph: _Graph, values: _Values) -> tuple[np.ndarray, list[Any], np
     vertices = []
     for centre, error in zip(centres.tolist(), errors.tolist(), strict=True):
         v = TopoDS_Vertex()
-        # the measured error, rounded up by a relative 1e-9 so that OCCT's own re-measuring passes
-        builder.MakeVertex(v, gp_Pnt(*centre), max(floor, error * (1.0 + 1e-9)))
+        # the measured error, rounded up by a relative 1e-9 and 16 ulps of the coordinates, so that
+        # OCCT's own re-measuring passes: it evaluates the curves its way, a few ulps apart (an error
+        # of 2.5e-7 at coordinates of 4,600 was 2.5e-16 over OCCT's distance, 1e-12 an ulp there)
+        ulps = 16.0 * _EPS * max(abs(c) for c in centre)
+        builder.MakeVertex(v, gp_Pnt(*centre), max(floor, error * (1.0 + 1e-9) + ulps))
         vertices.append(v)
     return labels, vertices, centres
 
@@ -312,7 +321,9 @@ def _same_piece(p: _Piece, q: _Piece, tol: float, values: _Values) -> bool:
     """True when two pieces between the same vertices lie on each other (an overlap).
 
     Each piece's middle point is found here, when a piece between the same vertices came
-    before: most pieces never need it.
+    before: most pieces never need it. Pieces whose middles lie on each other must also be
+    as long as each other (within ``4 tol`` and 1e-6 of the length): an edge standing still
+    (a spline with repeated poles) has its parameter middle at its stop, on any piece through it.
     """
     for piece, other in ((p, q), (q, p)):
         edge = other.edge
@@ -321,7 +332,8 @@ def _same_piece(p: _Piece, q: _Piece, tol: float, values: _Values) -> bool:
         proj = GeomAPI_ProjectPointOnCurve(gp_Pnt(*values(*piece.mid_at)), loc_curve, lo, hi)
         if proj.NbPoints() == 0 or proj.LowerDistance() > tol:
             return False
-    return True
+    lp, lq = (float(GCPnts_AbscissaPoint.Length_s(BRepAdaptor_Curve(x.edge))) for x in (p, q))
+    return abs(lp - lq) <= max(4.0 * tol, 1e-6 * max(lp, lq))
 
 
 def _pieces(graph: _Graph) -> tuple[list[list[_Piece]], list[Any], np.ndarray]:
@@ -383,7 +395,11 @@ def _bounded_faces(edges: list[TopoDS_Edge], plane: gp_Pln) -> list[Any]:
 
     The edges go in both orientations, with the four edges of a rectangle around
     them; OCCT's builder splits the rectangle into faces, and the face holding
-    the rectangle's edges (the unbounded outside) is dropped.
+    the rectangle's edges (the unbounded outside) is dropped. So is a face of holes
+    only (negative area): the builder sometimes leaves the outside's inner boundary
+    apart from the rectangle, as a face of its own (a circle and a spline through three
+    of its points: two faces that fill the disk, and the disk's outline as a hole
+    only, an invalid face of area -pi r^2). An exception OCCT raises is an OcctError.
     """
     box = Bnd_Box()
     for e in edges:
@@ -412,10 +428,20 @@ def _bounded_faces(edges: list[TopoDS_Edge], plane: gp_Pln) -> list[Any]:
     builder.SetFace(downcast_face(frame.Oriented(TopAbs_FORWARD)))
     builder.SetShapes(shapes)
     builder.SetAvoidInternalShapes(True)
-    builder.Perform()
+    try:
+        builder.Perform()
+    except Exception as exc:  # noqa: BLE001 - OCCT raises Standard_Failure subclasses
+        raise OcctError(f"BOPAlgo_BuilderFace failed on the arranged edges: {exc}") from exc
     if builder.HasErrors():
         raise OcctError("BOPAlgo_BuilderFace failed on the arranged edges")
-    return [f for f in builder.Areas() if not _touches(f, frame_edges)]
+    return [f for f in builder.Areas() if not _touches(f, frame_edges) and _signed_area(f) > 0.0]
+
+
+def _signed_area(face: Any) -> float:
+    """The area of a face, negative for a face bounded by holes only (its wires run clockwise)."""
+    props = GProp_GProps()
+    BRepGProp.SurfaceProperties_s(face, props)
+    return float(props.Mass())
 
 
 def _touches(face: Any, frame_edges: Any) -> bool:

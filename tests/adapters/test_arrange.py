@@ -8,26 +8,36 @@ curve points at the pieces' ends measured against their vertices.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import build123d as bd
 import numpy as np
 import pytest
 from OCP.BOPAlgo import BOPAlgo_Builder
-from OCP.BRep import BRep_Tool
+from OCP.BRep import BRep_Builder, BRep_Tool
 from OCP.BRepAdaptor import BRepAdaptor_Curve
 from OCP.BRepAlgoAPI import BRepAlgoAPI_Common, BRepAlgoAPI_Cut
-from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeFace, BRepBuilderAPI_MakeWire
 from OCP.BRepCheck import BRepCheck_Analyzer
 from OCP.BRepGProp import BRepGProp
-from OCP.gp import gp_Pnt
+from OCP.BRepTools import BRepTools
+from OCP.Geom import Geom_BSplineCurve
+from OCP.gp import gp_Ax2, gp_Circ, gp_Dir, gp_Pnt
 from OCP.GProp import GProp_GProps
 from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE, TopAbs_VERTEX
 from OCP.TopExp import TopExp
+from OCP.TopoDS import TopoDS_Shape
 
 from relief_cad.cad import api, ocp
 from relief_cad.cad import arrangement as arrange_module
 from relief_cad.cad import build123d as rbd
-from relief_cad.cad._compat import IndexedMapOfShape, downcast_edge
+from relief_cad.cad._compat import (
+    Array1OfInteger,
+    Array1OfPnt,
+    Array1OfReal,
+    IndexedMapOfShape,
+    downcast_edge,
+)
 from relief_cad.errors import InputTypeError, InvalidInputError, ReliefCadError, ToleranceError
 from tests._env import needs_cadquery
 
@@ -382,3 +392,91 @@ def test_garbage_collector_state_is_restored():
     with pytest.raises(InputTypeError):
         arrange([a, 42])
     assert gc.isenabled()
+
+
+# --------------------------------------------------------------------------- degenerate inputs
+def stalled_spline(n_stall=40, jitter=1e-12):
+    """A closed cubic B-spline that stands still at one point over 40 of its 51 spans.
+
+    Its poles repeat there up to ``jitter`` (build123d's periodic ``make_spline`` through some
+    point sets gives such curves, standing still over a quarter of their range).
+    """
+    rng = np.random.default_rng(7)
+    stop = (3.75, -3.11)
+    pts = [(6.0, -2.6), (5.0, -2.85), (4.26, -3.0)]
+    pts += [(stop[0] + jitter * a, stop[1] + jitter * b) for a, b in rng.uniform(-1.0, 1.0, (n_stall, 2))]
+    pts += [(4.04, -3.53), (3.58, -5.33), (4.2, -8.44), (12.3, -0.93), (6.0, -2.6)]
+    poles = Array1OfPnt(1, len(pts))
+    for i, (x, y) in enumerate(pts, 1):
+        poles.SetValue(i, gp_Pnt(x, y, 0.0))
+    nk = len(pts) - 2
+    knots, mults = Array1OfReal(1, nk), Array1OfInteger(1, nk)
+    for i in range(nk):
+        knots.SetValue(i + 1, float(i))
+        mults.SetValue(i + 1, 4 if i in (0, nk - 1) else 1)
+    return BRepBuilderAPI_MakeEdge(Geom_BSplineCurve(poles, knots, mults, 3)).Edge(), stop
+
+
+def test_a_spline_standing_still_does_not_meet_itself_there():
+    """Its 40 spans at one point were 1,032 overlaps of the edge with itself (0.5 s), and arrange
+    clustered their cuts for 4 s (40 to 70 s, and GBs, on the fuzz's splines); faces raised OCCT's
+    gp_Dir2d error. It passes its stop once: no self-intersection, one piece, the face OCCT makes
+    from its wire (OCCT's own check finds that face invalid too: the edge stands still).
+    """
+    edge, stop = stalled_spline()
+    assert BRepCheck_Analyzer(edge).IsValid()
+    assert len(api.intersections(edge)) == 0
+    pieces = arrange([edge])
+    assert len(pieces) == 1
+    (face,) = arrange([edge], faces=True)
+    own = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(edge).Wire()).Face()
+    assert math.isclose(area(face), area(own), rel_tol=1e-9)
+
+
+def test_a_line_through_a_spline_standing_still_is_cut_once_there():
+    # the line meets every span of the stop; their cuts are one vertex, the slivers between them no pieces
+    edge, stop = stalled_spline()
+    across = line((stop[0] - 1.0, stop[1] - 1.0, 0.0), (stop[0] + 1.0, stop[1] + 1.0, 0.0))
+    pieces = arrange([edge, across])
+    assert_connected(pieces)
+    near = [v for p in pieces for v in ends(p) if math.dist(BRep_Tool.Pnt_s(v).Coord(), (*stop, 0.0)) <= 1e-6]
+    assert len(near) == 4 and all(v.IsSame(near[0]) for v in near)  # two pieces of each edge end there
+
+
+def test_faces_of_holes_only_are_not_returned():
+    """A circle and a parabola (a B-spline) that starts on it, touches it and ends on it again.
+
+    OCCT's face builder gave two faces that fill the disk and a third, invalid, of area -pi r^2
+    (the disk's outline as a hole only). It still leaves the lens between the start and the touch
+    (area 0.0036) inside the larger face for this B-spline, as it does on General Fuse's edges
+    (the same parabola as a Bezier curve gets the lens as a face of its own).
+    """
+    r = 2.536061679005639
+    circle = BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(-0.787344510806478, 2.6861346924223124, 0.0),
+                                                    gp_Dir(0.0, 0.0, 1.0),
+                                                    gp_Dir(0.8735037126914098, 0.4868174852183547, 0.0)), r)).Edge()
+    pts = [(1.247807783673752, 4.1993313015887335), (-0.9845328402037407, 6.905852392030828),
+           (-1.972150474879593, 0.4438493253876712)]
+    poles, knots, mults = Array1OfPnt(1, 3), Array1OfReal(1, 2), Array1OfInteger(1, 2)
+    for i, (x, y) in enumerate(pts, 1):
+        poles.SetValue(i, gp_Pnt(x, y, 0.0))
+    for i, k in enumerate((0.0, 5.921357256071988), 1):
+        knots.SetValue(i, k)
+        mults.SetValue(i, 3)
+    parabola = BRepBuilderAPI_MakeEdge(Geom_BSplineCurve(poles, knots, mults, 2)).Edge()
+    faces = arrange([circle, parabola], faces=True)
+    assert len(faces) >= 2
+    assert all(BRepCheck_Analyzer(raw(f)).IsValid() and area(f) > 0.0 for f in faces)
+    assert math.isclose(sum(area(f) for f in faces), math.pi * r * r, rel_tol=1e-9)
+
+
+def test_vertex_tolerances_hold_for_occt_at_large_coordinates():
+    """A closed spline of size 1,000 near (300, -4,600) from build123d (made by a periodic
+    ``make_spline``, then scaled), whose ends are 4.9e-7 apart: the vertex that joins them had the
+    measured error 2.47e-7 rounded up by 1e-9 of it, 2.5e-16, where OCCT evaluates the curve a few
+    ulps (1e-12 there) away, and ``BRepBuilderAPI_MakeEdge`` refused the piece."""
+    shape = TopoDS_Shape()
+    assert BRepTools.Read_s(shape, str(Path(__file__).parent / "data" / "scaled_stalled_spline.brep"), BRep_Builder())
+    pieces = arrange([shape])
+    assert pieces
+    assert_connected(pieces)
