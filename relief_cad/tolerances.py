@@ -44,9 +44,9 @@ __all__ = [
     "RELATIVE_TOLERANCE",
     "ROUNDING_ULPS",
     "default_tolerance",
+    "floor_of_magnitude",
     "is_point_like",
     "resolve_tolerance",
-    "floor_of_magnitude",
     "rounding_floor",
     "size_of",
 ]
@@ -230,8 +230,9 @@ def _tolerance_at(diag: FloatArray, scale: float, big: float) -> float:
     size = math.sqrt(squares) * scale
     tol = RELATIVE_TOLERANCE * size + ROUNDING_ULPS * _EPS * big
     if not math.isfinite(tol):
-        return _floor(big)
-    return max(tol, _floor(big))  # never below the floor (subnormal data: 64 eps * 2e-308 < 1e-300)
+        return floor_of_magnitude(big)
+    # never below the floor (subnormal data: 64 eps * 2e-308 < 1e-300)
+    return max(tol, floor_of_magnitude(big))
 
 
 def size_of(*curves: RationalBezier | FloatArray) -> float:
@@ -320,9 +321,9 @@ def resolve_tolerance(tol: float | None, *curves: RationalBezier | FloatArray) -
         return default_tolerance(*curves)
     if isinstance(tol, ModelTolerance) and not any(isinstance(c, np.ndarray) for c in curves):
         # a model's tolerance is never capped, so only the floor is needed: the largest |x|, compiled
-        return max(tol, _floor(max(max_abs(_points_of(c), 3) for c in curves)))
+        return max(tol, floor_of_magnitude(max(max_abs(_points_of(c), 3) for c in curves)))
     size, big = _extent(curves)
-    floor = _floor(big)
+    floor = floor_of_magnitude(big)
     limit = MAX_TOLERANCE_FRACTION * size
     if tol > max(limit, floor) and size > 0.0 and not isinstance(tol, ModelTolerance):
         from .errors import ToleranceError
@@ -358,7 +359,7 @@ def rounding_floor(*curves: RationalBezier | FloatArray) -> float:
     >>> rounding_floor(RationalBezier([[0.0, 0.0], [1.0, 2.0]])) == ROUNDING_ULPS * _EPS * 2.0
     True
     """
-    return _floor(_extent(curves)[1])
+    return floor_of_magnitude(_extent(curves)[1])
 
 
 def floor_of_magnitude(big: float) -> float:
@@ -372,8 +373,4 @@ def floor_of_magnitude(big: float) -> float:
     >>> floor_of_magnitude(0.0)  # never zero
     1e-300
     """
-    return _floor(big)
-
-
-def _floor(big: float) -> float:
     return max(ROUNDING_ULPS * _EPS * big, 1e-300)
