@@ -46,6 +46,7 @@ import numpy as np
 
 from ..broadphase import cluster_points
 from ..errors import InvalidInputError, OcctError, UnsupportedCurveError
+from ..tolerances import floor_of_magnitude
 from . import api, flavour, ocp
 
 try:
@@ -102,9 +103,6 @@ class _Graph:
 
     def __post_init__(self) -> None:
         self.values = _Values(self.edges)
-
-
-_EPS = float(np.finfo(np.float64).eps)
 
 
 @contextmanager
@@ -220,11 +218,11 @@ def _vertices(graph: _Graph, values: _Values) -> tuple[np.ndarray, list[Any], np
     vertices = []
     for centre, error in zip(centres.tolist(), errors.tolist(), strict=True):
         v = TopoDS_Vertex()
-        # the measured error, rounded up by a relative 1e-9 and 16 ulps of the coordinates, so that
-        # OCCT's own re-measuring passes: it evaluates the curves its way, a few ulps apart (an error
+        # the measured error, rounded up by a relative 1e-9 and the rounding floor of the coordinates,
+        # so that OCCT's own re-measuring passes: it evaluates the curves its way, ulps apart (an error
         # of 2.5e-7 at coordinates of 4,600 was 2.5e-16 over OCCT's distance, 1e-12 an ulp there)
-        ulps = 16.0 * _EPS * max(abs(c) for c in centre)
-        builder.MakeVertex(v, gp_Pnt(*centre), max(floor, error * (1.0 + 1e-9) + ulps))
+        rounding = floor_of_magnitude(max(abs(c) for c in centre))
+        builder.MakeVertex(v, gp_Pnt(*centre), max(floor, error * (1.0 + 1e-9) + rounding))
         vertices.append(v)
     return labels, vertices, centres
 
