@@ -390,9 +390,10 @@ def _pair_jobs(
         ]
     else:
         candidates = box_pairs_between(ea.lows, ea.highs, eb.lows, eb.highs, pad=tol).tolist()
+    still_a, still_b = _stalls(ea, tol)[0], _stalls(eb, tol)[0]
     for ii, jj in candidates:
         i, j = int(ii), int(jj)
-        if (same and j < i) or (_stalls(ea, tol)[0][i] and _stalls(eb, tol)[0][j]):
+        if (same and j < i) or (still_a[i] and still_b[j]):
             continue  # two spans that are each one point within tol: see _stalls
         if same and i == j and _no_self_job(ea, i, planar, tol):
             continue
