@@ -27,7 +27,6 @@ clip range is where both hulls reach ``>= 0``.
 from __future__ import annotations
 
 import math
-from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 from numpy.typing import NDArray
@@ -39,6 +38,7 @@ from ._kernels import (
     hull_range_kernel,
     intersect_batch_kernel,
 )
+from ._pool import run_ordered
 from ._types import FloatArray
 from .contacts import range_exponent
 from .curves import RationalBezier
@@ -297,8 +297,7 @@ def batch_rows(points: FloatArray, weights: FloatArray, offsets: NDArray[np.int6
         return part
 
     starts = range(0, n, size)
-    with ThreadPoolExecutor(max_workers=min(threads, len(starts))) as pool:
-        return np.concatenate(list(pool.map(chunk, starts)))
+    return np.concatenate(run_ordered(chunk, starts, threads))
 
 
 def _pair_tolerances(p: FloatArray, w: FloatArray, off: NDArray[np.int64], pairs: NDArray[np.int64],

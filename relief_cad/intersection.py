@@ -65,7 +65,6 @@ import functools
 import gc
 import math
 from collections.abc import Iterable, Sequence
-from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 from numpy.typing import NDArray
@@ -87,6 +86,7 @@ from ._kernels import (
     planar_pair,
 )
 from ._kernels.rows import batch_lists, rows_to_list
+from ._pool import run_ordered
 from ._types import FloatArray
 from .contacts import needs_refining, refine_contacts, refine_self, self_overlaps, whole_overlap
 from .curves import RationalBezier
@@ -460,9 +460,7 @@ def _planar_batch(pairs: list[tuple[RationalBezier, RationalBezier]], pts: Float
         if len(starts) == 1:
             chunk(0, n)
         else:
-            with ThreadPoolExecutor(max_workers=min(workers, len(starts))) as pool:
-                for _ in pool.map(lambda s: chunk(s, min(n, s + size)), starts):
-                    pass  # in order: the first chunk that raised raises here
+            run_ordered(lambda s: chunk(s, min(n, s + size)), starts, workers)  # first raiser raises
     finally:
         if gc_enabled:
             gc.enable()
