@@ -315,12 +315,20 @@ def pack_pairs(pairs: list, cls: type, lim: cython.double):
     ([0], [1, 2], [0, 2, 5], [1.0, 1.0, 1.0, 0.5, 1.0])
     """
     k: cython.Py_ssize_t
-    total: cython.Py_ssize_t = 0
+    c: cython.Py_ssize_t = 0  # curves packed
+    row: cython.Py_ssize_t = 0  # rows packed
     PA: cython.const[cython.double][:, :]
     PB: cython.const[cython.double][:, :]
     taken: list = []
     rest: list = []
-    views: list = []  # the kernel views (points, weights) of the taken curves, in order
+    cap: cython.Py_ssize_t = 8 * len(pairs) + 8  # rows: two cubics a pair, grown when short
+    P = np.empty((cap, 2))
+    W = np.empty(cap)
+    offsets = np.empty(2 * len(pairs) + 1, dtype=np.int64)
+    Pv: cython.double[:, :] = P  # typed once (and again when grown): no buffer look-up per curve
+    Wv: cython.double[:] = W
+    Ov: cython.longlong[:] = offsets
+    Ov[0] = 0
     for k in range(len(pairs)):
         pr = pairs[k]
         if type(pr) is not tuple or len(pr) != 2 or type(pr[0]) is not cls or type(pr[1]) is not cls:
@@ -335,34 +343,31 @@ def pack_pairs(pairs: list, cls: type, lim: cython.double):
             rest.append(k)
             continue
         taken.append(k)
-        views.append(ka)
-        views.append(kb)
-        total += PA.shape[0] + PB.shape[0]
-    P = np.empty((total, 2))
-    W = np.empty(total)
-    offsets = np.empty(len(views) + 1, dtype=np.int64)
-    _pack_views(views, P, W, offsets)
+        if row + PA.shape[0] + PB.shape[0] > cap:
+            cap = 2 * cap + PA.shape[0] + PB.shape[0]
+            P = np.concatenate((P[:row], np.empty((cap - row, 2))))
+            W = np.concatenate((W[:row], np.empty(cap - row)))
+            Pv = P
+            Wv = W
+        row = _pack_curve(PA, ka[1], Pv, Wv, row)
+        row = _pack_curve(PB, kb[1], Pv, Wv, row)
+        Ov[c + 1] = row - PB.shape[0]
+        Ov[c + 2] = row
+        c += 2
+    P = P[:row]
+    W = W[:row]
     P.flags.writeable = False
     W.flags.writeable = False
-    return taken, rest, P, W, offsets
+    return taken, rest, P, W, offsets[: c + 1]
 
 
 @cython.cfunc
-def _pack_views(views: list, P: cython.double[:, :], W: cython.double[:],
-                offsets: cython.longlong[:]) -> None:
-    """Copy each curve's kernel views ``(points, weights)`` of ``views`` into ``P``, ``W`` back to back."""
-    c: cython.Py_ssize_t
+def _pack_curve(Q: cython.const[cython.double][:, :], V: cython.const[cython.double][:],
+                P: cython.double[:, :], W: cython.double[:], row: cython.Py_ssize_t) -> cython.Py_ssize_t:
+    """Copy one curve's points ``Q`` and weights ``V`` into ``P``, ``W`` from ``row``: the next free row."""
     i: cython.Py_ssize_t
-    row: cython.Py_ssize_t = 0
-    Q: cython.const[cython.double][:, :]
-    V: cython.const[cython.double][:]
-    offsets[0] = 0
-    for c in range(len(views)):
-        Q = views[c][0]
-        V = views[c][1]
-        for i in range(Q.shape[0]):
-            P[row + i, 0] = Q[i, 0]
-            P[row + i, 1] = Q[i, 1]
-            W[row + i] = V[i]
-        row += Q.shape[0]
-        offsets[c + 1] = row
+    for i in range(Q.shape[0]):
+        P[row + i, 0] = Q[i, 0]
+        P[row + i, 1] = Q[i, 1]
+        W[row + i] = V[i]
+    return row + Q.shape[0]
