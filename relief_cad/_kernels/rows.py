@@ -170,7 +170,7 @@ def batch_lists(rows, tols) -> tuple[list[IntersectionList], list[int]]:
     boxes: list = []
     for j in range(n):
         out = IntersectionList.__new__(IntersectionList)
-        out.tol_used = T[j]
+        out.tol_used = float(T[j])  # a Python float in the uncompiled mode too
         out.unresolved = ()
         lists.append(out)
         boxes.append([])
