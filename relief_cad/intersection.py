@@ -426,45 +426,48 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     return finish(IntersectionList(items, res.unresolved, ftol), on_budget)
 
 
-def _planar_batch(pairs: list[tuple[RationalBezier, RationalBezier]], pts: FloatArray, wts: FloatArray,
-                  offsets: NDArray[np.int64], tols: FloatArray, budget: int, on_budget: OnBudget,
-                  workers: int) -> list[IntersectionList]:
-    """The result lists of planar ``pairs`` (``tols``: each pair's resolved tolerance), in order.
+def _batch_job(part: list[tuple[RationalBezier, RationalBezier]], lim: float, tol: float | None, budget: int,
+               on_budget: OnBudget) -> tuple[list[int], list[int], list[IntersectionList] | Exception]:
+    """One chunk of :func:`intersect_many`'s pairs: ``(taken, rest, lists)``.
 
-    The curves come packed (:func:`relief_cad._kernels.batch.pack_pairs`: pair ``i`` is curves
-    ``2 i`` and ``2 i + 1``); contiguous chunks of pairs run on ``workers`` threads, each
-    through the batch kernel (without the GIL) and on to its result objects (with it), so one
-    chunk's objects are built while another's kernel runs. The output is the same for any
-    ``workers``; a budget error is that of the first pair, in order, whose budget ran out.
+    The planar pairs that cannot coincide all along (``lim``: see
+    :func:`relief_cad._kernels.batch.pack_pairs`) are packed and ``taken`` (their indices in
+    ``part``); ``rest`` lists the others. ``lists`` holds the taken pairs' result lists, in
+    order, or the error of the first pair that raised (the caller raises it in its turn, after
+    any error of the ``rest``). Each pair's tolerance is resolved (``tol`` None: each pair's
+    default), the batch kernel runs without the GIL and the result objects are made with it:
+    on a thread, one chunk is packed and its objects made while another chunk's kernel runs.
     """
-    idx = np.arange(2 * len(pairs), dtype=np.int64).reshape(-1, 2)
-    out: list[IntersectionList] = [IntersectionList()] * len(pairs)
-
-    def chunk(start: int, stop: int) -> None:
-        rows = intersect_batch_kernel(pts, wts, offsets, idx[start:stop], tols[start:stop], budget)
-        lists, looks = batch_lists(rows, tols[start:stop])  # by pair, each by t (the kernel's order)
+    taken, rest, pts, wts, offsets = pack_pairs(part, RationalBezier, lim)
+    pairs = [part[k] for k in taken]
+    try:
+        tols = (_pairs_default_tolerances(pairs) if tol is None
+                else np.array([resolve_tolerance(tol, *pr) for pr in pairs]))
+        idx = np.arange(2 * len(pairs), dtype=np.int64).reshape(-1, 2)
+        rows = intersect_batch_kernel(pts, wts, offsets, idx, tols, budget)
+        lists, looks = batch_lists(rows, tols)  # by pair, each by t (the kernel's order)
         for j in looks:  # the pairs whose rows a budget left open or that refining may change
-            listed, (a, b) = lists[j], pairs[start + j]
+            listed, (a, b) = lists[j], pairs[j]
             if listed.unresolved or needs_refining(a, b, listed):
                 lists[j] = finish(_with_tol(_refined(a, b, listed, listed.tol_used), listed.tol_used),
                                   on_budget)
-        out[start:stop] = lists
+    except Exception as exc:  # noqa: BLE001 - raised by the caller, in order
+        return taken, rest, exc
+    return taken, rest, lists
 
-    n = len(pairs)
-    size = n if workers <= 1 or n < 2 * _MIN_CHUNK else max(_MIN_CHUNK, -(-n // (4 * workers)))
-    starts = range(0, n, size)
-    # many small objects at once: keep the cyclic GC from rescanning them repeatedly
-    gc_enabled = gc.isenabled()
-    gc.disable()
-    try:
-        if len(starts) == 1:
-            chunk(0, n)
-        else:
-            run_ordered(lambda s: chunk(s, min(n, s + size)), starts, workers)  # first raiser raises
-    finally:
-        if gc_enabled:
-            gc.enable()
-    return out
+
+def _rest_pair(plist: Sequence[object], k: int, tol: float | None, budget: int,
+               on_budget: OnBudget) -> IntersectionList:
+    """Item ``k`` of :func:`intersect_many`'s pairs that the batch kernel does not take, checked first."""
+    pr = plist[k]
+    if not isinstance(pr, tuple) or len(pr) != 2:
+        raise InputTypeError(f"pairs[{k}] should be a tuple (a, b), not {type(pr).__name__}")
+    a, b = pr
+    if not isinstance(a, RationalBezier):
+        check_curve(a, f"pairs[{k}][0]")
+    if not isinstance(b, RationalBezier):
+        check_curve(b, f"pairs[{k}][1]")
+    return intersect(a, b, tol=tol, budget=budget, on_budget=on_budget)
 
 
 _MIN_CHUNK = 64  # pairs per thread task, at least: below that the pool costs more than it gains
@@ -515,25 +518,30 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
     nbudget = check_budget(budget)
     ftol = check_tol(tol)
     nworkers = check_workers(workers)
-    out: list[IntersectionList | None] = [None] * len(plist)
-    # the planar pairs that cannot coincide all along, packed in one compiled pass; the others
-    # (and any bad item, which raises here) go through intersect one by one
-    planar, rest, pts, wts, offsets = pack_pairs(plist, RationalBezier, -1.0 if ftol is None else 2.0 * ftol)
-    for k in rest:
-        pr = plist[k]
-        if not isinstance(pr, tuple) or len(pr) != 2:
-            raise InputTypeError(f"pairs[{k}] should be a tuple (a, b), not {type(pr).__name__}")
-        a, b = pr
-        if not isinstance(a, RationalBezier):
-            check_curve(a, f"pairs[{k}][0]")
-        if not isinstance(b, RationalBezier):
-            check_curve(b, f"pairs[{k}][1]")
-        out[k] = intersect(a, b, tol=ftol, budget=nbudget, on_budget=on_budget)
-    if planar:
-        taken = [plist[k] for k in planar]
-        tols = (_pairs_default_tolerances(taken) if ftol is None
-                else np.array([resolve_tolerance(ftol, *pr) for pr in taken]))
-        lists = _planar_batch(taken, pts, wts, offsets, tols, nbudget, on_budget, nworkers)
-        for k, listed in zip(planar, lists, strict=True):
-            out[k] = listed
+    n = len(plist)
+    out: list[IntersectionList | None] = [None] * n
+    lim = -1.0 if ftol is None else 2.0 * ftol
+    size = n if nworkers <= 1 or n < 2 * _MIN_CHUNK else max(_MIN_CHUNK, -(-n // (4 * nworkers)))
+    # many small objects at once: keep the cyclic GC from rescanning them repeatedly
+    gc_enabled = gc.isenabled()
+    gc.disable()
+    try:
+        # each chunk is packed, run and made into result lists by one task of the pool (one
+        # task packs while another's kernel runs); the pairs it does not take (and any bad
+        # item, which raises first) go through intersect one by one, then the chunks' lists
+        # are placed in order (a chunk's error raised at its turn)
+        starts = range(0, n, size)
+        chunks = run_ordered(lambda s: _batch_job(plist[s:s + size], lim, ftol, nbudget, on_budget),
+                             starts, nworkers)
+        for start, (_, rest, _) in zip(starts, chunks, strict=True):
+            for k in rest:
+                out[start + k] = _rest_pair(plist, start + k, ftol, nbudget, on_budget)
+        for start, (taken, _, lists) in zip(starts, chunks, strict=True):
+            if isinstance(lists, Exception):
+                raise lists
+            for k, listed in zip(taken, lists, strict=True):
+                out[start + k] = listed
+    finally:
+        if gc_enabled:
+            gc.enable()
     return [o if o is not None else IntersectionList() for o in out]

@@ -9,6 +9,7 @@ import pytest
 
 from relief_cad import RationalBezier, intersect, intersect_many
 from relief_cad._pool import run_ordered
+from relief_cad.errors import BudgetExceededError
 
 
 def _rows(lists: list) -> list:
@@ -63,3 +64,30 @@ def test_a_forked_child_gets_a_pool_of_its_own() -> None:
         if proc.is_alive():
             proc.kill()
     assert got == want
+
+
+def _first_error(pairs: list, workers: int, **kw: object) -> tuple[str, object]:
+    with pytest.raises(Exception) as info:
+        intersect_many(pairs, workers=workers, **kw)  # type: ignore[arg-type]
+    return f"{type(info.value).__name__}: {info.value}", getattr(info.value, "unresolved", None)
+
+
+def test_the_same_error_for_any_workers() -> None:
+    """A bad item raises before any budget error; a budget error is that of the first pair, in order."""
+    far = RationalBezier([[5.0, 5.0], [6.0, 6.0]])  # apart from the unit square: no step at all
+    tight = [(a, far) for a, _ in _mixed_pairs(300)] + _mixed_pairs(300)  # budgets run out in later chunks
+    bad = tight + ["not a pair"]
+    for w in (1, 2, 3):
+        assert _first_error(bad, w, budget=1) == (
+            "InputTypeError: pairs[600] should be a tuple (a, b), not str", None)
+    first: tuple[int, object] | None = None
+    for k, (a, b) in enumerate(tight):  # the first pair, in order, whose budget of one step runs out
+        try:
+            intersect(a, b, budget=1)
+        except BudgetExceededError as exc:
+            first = (k, exc.unresolved)
+            break
+    assert first is not None and first[0] >= 300
+    for w in (1, 2, 3):
+        message, unresolved = _first_error(tight, w, budget=1)
+        assert message.startswith("BudgetExceededError") and unresolved == first[1]
