@@ -7,7 +7,9 @@ axis, it does not degenerate when many boxes share a coordinate range (copies of
 a part side by side, an axis-aligned pattern of shapes).
 
 :func:`cluster_points` merges points closer than a tolerance (the cut points
-that become one vertex) through the same grid.
+that become one vertex): points in one cell of a fine grid (side ``tol / (2 sqrt(dim))``) are
+one group at once, and only groups are paired, through the same grid as boxes. So the cost
+grows with the number of places, not with the square of the points at one place.
 
 >>> import numpy as np
 >>> lows = np.array([[0.0, 0.0], [0.5, 0.5], [3.0, 0.0]])
@@ -254,18 +256,104 @@ def cluster_points(
     if not np.all(np.isfinite(pts)):
         raise InvalidInputError("expected finite points; received NaN or inf")
     p = _pad(tol)
-    i, j = _cell_pairs(pts, pts, p)
-    close = np.stack([np.minimum(i, j), np.maximum(i, j)], axis=1)
-    if close.shape[0]:
-        diff = pts[close[:, 0]] - pts[close[:, 1]]
-        near = np.flatnonzero(np.abs(diff).max(axis=1) <= p)  # no coordinate apart by more than tol
-        close = close[near[np.linalg.norm(diff[near], axis=1) <= tol]]
     extra = np.asarray(links, dtype=np.int64).reshape(-1, 2)
     if extra.shape[0] and (extra.min() < 0 or extra.max() >= pts.shape[0]):
         raise ShapeError(
             f"expected links between point indices 0..{pts.shape[0] - 1}; received {extra.tolist()}"
         )
-    return _components(pts.shape[0], np.vstack([close, extra]))
+    node, lo, hi = _tight_groups(pts, p)
+    edges = [node[extra]] if extra.shape[0] else []
+    if lo.shape[0] > 1:
+        edges.append(_close_groups(pts, node, lo, hi, p))
+    return _components(lo.shape[0], np.vstack(edges) if edges else np.empty((0, 2), dtype=np.int64))[node]
+
+
+def _tight_groups(pts: FloatArray, tol: float) -> tuple[IntArray, FloatArray, FloatArray]:
+    """Group points that are all within ``tol`` of each other: ``(node, lo, hi)``.
+
+    Points sharing a cell of a grid of side ``tol / (2 sqrt(dim))`` form one group when the
+    box of the group's points has a diagonal of at most ``tol`` (so every two of them are
+    within ``tol``: one component whatever else); a point of a group that fails that (a
+    ``tol`` below the rounding of the coordinates) is a group of its own. ``node[i]`` is
+    point ``i``'s group, the groups numbered in order of their first point; ``lo``, ``hi``
+    (groups, dim) are the groups' boxes. Many points at one place (the cut points of a
+    hundred lines through one point) thus become one group in ``O(n log n)``, where testing
+    their pairs took ``O(n^2)`` time and memory.
+    """
+    n, dim = pts.shape
+    if n == 0:
+        return np.empty(0, dtype=np.int64), pts, pts
+    if tol > 0.0:
+        side = tol / (2.0 * np.sqrt(max(dim, 1)))
+        with np.errstate(over="ignore"):  # inf for a tol below the coordinates' rounding (split below)
+            cells = np.floor((pts - pts.min(axis=0)) / side)
+    else:
+        cells = pts  # tol 0: only equal points are one
+    _, first, cell = np.unique(cells, axis=0, return_index=True, return_inverse=True)
+    cell = _by_first(cell.reshape(-1), first)
+    lo, hi = _group_boxes(pts, cell)
+    loose = np.linalg.norm(hi - lo, axis=1) > tol
+    if loose.any():  # every point of a loose group apart
+        alone = loose[cell]
+        cell = np.where(alone, cell.max() + 1 + np.arange(n, dtype=np.int64), cell)
+        _, first, cell = np.unique(cell, return_index=True, return_inverse=True)
+        cell = _by_first(cell.reshape(-1), first)
+        lo, hi = _group_boxes(pts, cell)
+    return cell, lo, hi
+
+
+def _by_first(group: IntArray, first: IntArray) -> IntArray:
+    """Renumber groups ``0 .. m-1`` in order of their first member (``first``: each group's first index)."""
+    rank = np.empty(first.shape[0], dtype=np.int64)
+    rank[np.argsort(first, kind="stable")] = np.arange(first.shape[0], dtype=np.int64)
+    return rank[group]
+
+
+def _group_boxes(pts: FloatArray, group: IntArray) -> tuple[FloatArray, FloatArray]:
+    """The box ``(lo, hi)`` of each group's points (groups ``0 .. group.max()``)."""
+    m = int(group.max()) + 1
+    lo = np.full((m, pts.shape[1]), np.inf)
+    hi = np.full((m, pts.shape[1]), -np.inf)
+    np.minimum.at(lo, group, pts)
+    np.maximum.at(hi, group, pts)
+    return lo, hi
+
+
+def _close_groups(pts: FloatArray, node: IntArray, lo: FloatArray, hi: FloatArray, tol: float) -> IntArray:
+    """The pairs of groups with two points within ``tol`` of each other, as rows ``(a, b)``.
+
+    Candidates come from the grid (boxes within ``tol``); a pair whose boxes are more than
+    ``tol`` apart has no such points, one whose boxes are within ``tol`` corner to far corner
+    has only such points (the norms of the coordinate differences are monotone in them, as
+    computed); only the pairs in between compare their points.
+    """
+    i, j = _cell_pairs(lo, hi, tol)
+    a, b = np.minimum(i, j), np.maximum(i, j)
+    keep = (a != b) & _touch(lo, hi, lo, hi, a, b, tol)
+    pairs = _unique_pairs(a[keep], b[keep])
+    a, b = pairs[:, 0], pairs[:, 1]
+    gap = np.maximum(np.maximum(lo[b] - hi[a], lo[a] - hi[b]), 0.0)
+    reach = np.maximum(hi[a] - lo[b], hi[b] - lo[a])
+    near = np.linalg.norm(gap, axis=1) <= tol
+    sure = near & (np.linalg.norm(reach, axis=1) <= tol)
+    unsure = np.flatnonzero(near & ~sure)
+    if unsure.shape[0]:
+        order = np.argsort(node, kind="stable")  # each group's points, as one run of ``order``
+        starts = np.searchsorted(node[order], np.arange(lo.shape[0] + 1))
+        for k in unsure.tolist():
+            sure[k] = _any_within(pts[order[starts[a[k]]:starts[a[k] + 1]]],
+                                  pts[order[starts[b[k]]:starts[b[k] + 1]]], tol)
+    close: IntArray = pairs[sure]
+    return close
+
+
+def _any_within(pa: FloatArray, pb: FloatArray, tol: float) -> bool:
+    """True when a point of ``pa`` and one of ``pb`` are within ``tol`` (blocks of about 2**20 pairs)."""
+    rows = max(1, (1 << 20) // pb.shape[0])
+    for s in range(0, pa.shape[0], rows):  # stops at the first block with such a pair
+        if bool((np.linalg.norm(pa[s:s + rows, None, :] - pb[None, :, :], axis=2) <= tol).any()):
+            return True
+    return False
 
 
 def _components(n: int, edges: IntArray) -> IntArray:

@@ -123,3 +123,42 @@ def test_bad_input_is_named(call, error, builtin):
         call()
     assert isinstance(info.value, ReliefCadError) and isinstance(info.value, builtin)
     assert "expected" in str(info.value)
+
+
+def _closeness_components(pts: np.ndarray, tol: float) -> np.ndarray:
+    """Brute force: ``same[i, j]`` when points i and j are joined by a chain of steps within ``tol``."""
+    n = pts.shape[0]
+    reach = np.linalg.norm(pts[:, None] - pts[None, :], axis=2) <= tol
+    for k in range(n):  # transitive closure (Warshall)
+        reach |= reach[:, k:k + 1] & reach[k:k + 1, :]
+    return reach
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_jittered_clusters_about_tol_apart_are_the_closeness_components(seed):
+    """Clusters of points spread over a third of tol, their centres about tol apart: the groups'
+    boxes are neither surely apart nor surely within tol, so their points are compared."""
+    rng = np.random.default_rng(seed)
+    tol = 1e-3
+    centres = np.cumsum(rng.uniform(0.8, 1.3, size=(6, 2)) * tol / np.sqrt(2), axis=0)
+    pts = (centres[rng.integers(0, 6, 150)] + rng.uniform(-tol / 6, tol / 6, (150, 2)))
+    labels = cluster_points(pts, tol)
+    assert np.array_equal(labels[:, None] == labels[None, :], _closeness_components(pts, tol))
+
+
+def test_thousands_of_points_at_one_place_are_one_vertex_without_pairing_them():
+    """The cut points of many lines through one point: 20,000 points within 1e-12 of the origin
+    (on both sides of 0, so in several grid cells) and 20,000 near (1, 0). Testing every pair took
+    two times 2e8 candidate pairs (gigabytes); they are one group per grid cell now."""
+    rng = np.random.default_rng(3)
+    near_0 = rng.uniform(-1e-12, 1e-12, (20000, 2))
+    near_1 = near_0[::-1] + [1.0, 0.0]
+    labels = cluster_points(np.vstack([near_0, near_1]), 1e-9)
+    assert labels[:20000].tolist() == [0] * 20000 and labels[20000:].tolist() == [1] * 20000
+
+
+def test_a_tol_below_the_rounding_of_the_coordinates_joins_no_distinct_points():
+    """tol 1e-310: the grid's cell coordinates overflow to inf, and one cell holds points 1 apart;
+    a group whose points are not all within tol is split into its points."""
+    labels = cluster_points([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [2.0, 0.0]], 1e-310)
+    assert labels.tolist() == [0, 1, 2, 2]
