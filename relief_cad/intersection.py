@@ -426,14 +426,15 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     return finish(IntersectionList(items, res.unresolved, ftol), on_budget)
 
 
-def _batch_job(part: list[tuple[RationalBezier, RationalBezier]], lim: float, tol: float | None, budget: int,
-               on_budget: OnBudget) -> tuple[list[int], list[int], list[IntersectionList] | Exception]:
-    """One chunk of :func:`intersect_many`'s pairs: ``(taken, rest, lists)``.
+def _batch_job(out: list[IntersectionList], start: int, part: list[tuple[RationalBezier, RationalBezier]],
+               lim: float, tol: float | None, budget: int,
+               on_budget: OnBudget) -> tuple[list[int], Exception | None]:
+    """One chunk of :func:`intersect_many`'s pairs, ``part`` (from pair ``start``): ``(rest, error)``.
 
     The planar pairs that cannot coincide all along (``lim``: see
-    :func:`relief_cad._kernels.batch.pack_pairs`) are packed and ``taken`` (their indices in
-    ``part``); ``rest`` lists the others. ``lists`` holds the taken pairs' result lists, in
-    order, or the error of the first pair that raised (the caller raises it in its turn, after
+    :func:`relief_cad._kernels.batch.pack_pairs`) are packed, and their result lists are put in
+    ``out`` at their places; ``rest`` lists the indices (in ``part``) of the others. ``error`` is
+    that of the first taken pair that raised, or None (the caller raises it in its turn, after
     any error of the ``rest``). Each pair's tolerance is resolved (``tol`` None: each pair's
     default), the batch kernel runs without the GIL and the result objects are made with it:
     on a thread, one chunk is packed and its objects made while another chunk's kernel runs.
@@ -452,8 +453,10 @@ def _batch_job(part: list[tuple[RationalBezier, RationalBezier]], lim: float, to
                 lists[j] = finish(_with_tol(_refined(a, b, listed, listed.tol_used), listed.tol_used),
                                   on_budget)
     except Exception as exc:  # noqa: BLE001 - raised by the caller, in order
-        return taken, rest, exc
-    return taken, rest, lists
+        return rest, exc
+    for k, listed in zip(taken, lists, strict=True):
+        out[start + k] = listed
+    return rest, None
 
 
 def _rest_pair(plist: Sequence[object], k: int, tol: float | None, budget: int,
@@ -470,6 +473,7 @@ def _rest_pair(plist: Sequence[object], k: int, tol: float | None, budget: int,
     return intersect(a, b, tol=tol, budget=budget, on_budget=on_budget)
 
 
+_EMPTY = IntersectionList()  # a place of intersect_many's output before its list is put there
 _MIN_CHUNK = 64  # pairs per thread task, at least: below that the pool costs more than it gains
 
 
@@ -519,7 +523,7 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
     ftol = check_tol(tol)
     nworkers = check_workers(workers)
     n = len(plist)
-    out: list[IntersectionList | None] = [None] * n
+    out: list[IntersectionList] = [_EMPTY] * n  # every place is filled below, or an error raised
     lim = -1.0 if ftol is None else 2.0 * ftol
     size = n if nworkers <= 1 or n < 2 * _MIN_CHUNK else max(_MIN_CHUNK, -(-n // (4 * nworkers)))
     # many small objects at once: keep the cyclic GC from rescanning them repeatedly
@@ -528,20 +532,18 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
     try:
         # each chunk is packed, run and made into result lists by one task of the pool (one
         # task packs while another's kernel runs); the pairs it does not take (and any bad
-        # item, which raises first) go through intersect one by one, then the chunks' lists
-        # are placed in order (a chunk's error raised at its turn)
+        # item, which raises first) go through intersect one by one, then a chunk's error is
+        # raised in its turn
         starts = range(0, n, size)
-        chunks = run_ordered(lambda s: _batch_job(plist[s:s + size], lim, ftol, nbudget, on_budget),
+        chunks = run_ordered(lambda s: _batch_job(out, s, plist[s:s + size], lim, ftol, nbudget, on_budget),
                              starts, nworkers)
-        for start, (_, rest, _) in zip(starts, chunks, strict=True):
+        for start, (rest, _) in zip(starts, chunks, strict=True):
             for k in rest:
                 out[start + k] = _rest_pair(plist, start + k, ftol, nbudget, on_budget)
-        for start, (taken, _, lists) in zip(starts, chunks, strict=True):
-            if isinstance(lists, Exception):
-                raise lists
-            for k, listed in zip(taken, lists, strict=True):
-                out[start + k] = listed
+        for _, error in chunks:
+            if error is not None:
+                raise error
     finally:
         if gc_enabled:
             gc.enable()
-    return [o if o is not None else IntersectionList() for o in out]
+    return out
