@@ -249,6 +249,8 @@ def as_real_array(value: Any, name: str) -> FloatArray:
     except (TypeError, ValueError) as exc:
         raise InputTypeError(f"{name} should be an array of real numbers, not a ragged or "
                              f"non-numeric {type(value).__name__}") from exc
+    if type(value) in (list, tuple) and raw.dtype == np.float64:
+        return raw  # a list of floats: numpy made a new C-ordered array, the one to return
     err = _array_kind_error(raw, name)
     if err is not None:
         raise err

@@ -28,14 +28,23 @@ from typing import overload
 
 import numpy as np
 
-from ._checks import as_real_array, check_count, check_degree, check_finite, check_param, check_weights
+from ._checks import (
+    MAX_WEIGHT_RATIO,
+    as_real_array,
+    check_count,
+    check_degree,
+    check_finite,
+    check_param,
+    check_weights,
+)
 from ._kernels.batch import kernel_views
-from ._kernels.bezier import bernstein_product, decasteljau_rows, split_rows
+from ._kernels.bezier import bernstein_product, decasteljau_rows, homogeneous_rows, split_rows
 from ._types import FloatArray, ParamsLike, PointsLike
 from .errors import (
     DegenerateCurveError,
     DegreeError,
     ProjectionError,
+    ReliefCadError,
     ShapeError,
     WeightError,
 )
@@ -178,23 +187,11 @@ class RationalBezier:
                 f"A curve needs at least 2 control points (degree >= 1), not {pts.shape[0]}."
             )
         check_degree(pts.shape[0] - 1)
-        check_finite(pts, "control_points")
-        npts = pts.shape[0]
-        if weights is None:
-            w = np.ones(npts)
-        else:
-            w = as_real_array(weights, "weights")
-            if w.shape != (npts,):
-                raise ShapeError(
-                    f"weights should have shape ({npts},) to match {npts} control points, not {w.shape}"
-                )
-            check_finite(w, "weights")
-            check_weights(w)
-        h = np.empty((npts, pts.shape[1] + 1))
-        with np.errstate(over="ignore", invalid="ignore"):
-            h[:, :-1] = pts * w[:, None]
-        h[:, -1] = w
-        check_finite(h, "weighted control points")
+        w = None if weights is None else _weights_of(weights, pts)
+        # the rows in one compiled pass; None when a check fails, and the checks name it
+        h = homogeneous_rows(pts, w, MAX_WEIGHT_RATIO)
+        if h is None:
+            h = _checked_rows(pts, w)
         self._set(h, pts, w)
 
     def _set(self, h: FloatArray, pts: FloatArray | None, w: FloatArray | None) -> None:
@@ -692,6 +689,42 @@ class RationalBezier:
 
     def __hash__(self) -> int:
         return hash((self._h.shape, self._h.tobytes()))
+
+
+def _weights_of(weights: ParamsLike, pts: FloatArray) -> FloatArray:
+    """The constructor's weights as a new float64 array of one weight per point of ``pts``.
+
+    Bad weights raise their error after that of non-finite points: the points are named first.
+    """
+    try:
+        w = as_real_array(weights, "weights")
+        if w.shape != (pts.shape[0],):
+            raise ShapeError(f"weights should have shape ({pts.shape[0]},) to match {pts.shape[0]} "
+                             f"control points, not {w.shape}")
+    except ReliefCadError:
+        check_finite(pts, "control_points")
+        raise
+    return w
+
+
+def _checked_rows(pts: FloatArray, w: FloatArray | None) -> FloatArray:
+    """The homogeneous rows of ``pts`` and ``w`` (None: all 1), raising the error that names a bad entry.
+
+    The constructor's slow path, when :func:`relief_cad._kernels.bezier.homogeneous_rows` refused
+    the arrays (the same rows, the same checks).
+    """
+    check_finite(pts, "control_points")
+    if w is None:
+        w = np.ones(pts.shape[0])
+    else:
+        check_finite(w, "weights")
+        check_weights(w)
+    h = np.empty((pts.shape[0], pts.shape[1] + 1))
+    with np.errstate(over="ignore", invalid="ignore"):
+        h[:, :-1] = pts * w[:, None]
+    h[:, -1] = w
+    check_finite(h, "weighted control points")
+    return h
 
 
 def _restore(cls: type[RationalBezier], h: FloatArray, pts: FloatArray | None,

@@ -334,6 +334,51 @@ def _pow2_scale(big: cython.double) -> cython.double:
     return scale
 
 
+def homogeneous_rows(P: cython.const[cython.double][:, :], W: object, max_ratio: cython.double):
+    """The rows ``[w_i P_i, w_i]`` of a curve's points ``P`` (n + 1, d) and weights ``W``, or None.
+
+    ``W`` is a float64 array (n + 1,) or None (every weight 1). None is returned when a point,
+    a weight or a product is not finite, a weight is not > 0, or the weights' max / min exceeds
+    ``max_ratio``: the checks of :class:`~relief_cad.RationalBezier` then name the fault. The
+    products are numpy's ``P * W[:, None]`` (one rounding each), so the rows are those numpy
+    makes; a new (n + 1, d + 1) array.
+
+    >>> import numpy as np
+    >>> homogeneous_rows(np.array([[1.0, 2.0], [3.0, 4.0]]), np.array([2.0, 0.5]), 1e15).tolist()
+    [[2.0, 4.0, 2.0], [1.5, 2.0, 0.5]]
+    >>> homogeneous_rows(np.array([[1.0, 2.0]]), np.array([0.0]), 1e15) is None
+    True
+    """
+    i: cython.Py_ssize_t
+    c: cython.Py_ssize_t
+    n: cython.Py_ssize_t = P.shape[0]
+    d: cython.Py_ssize_t = P.shape[1]
+    w: cython.double = 1.0
+    lo: cython.double = _INF
+    hi: cython.double = 0.0
+    WV: cython.const[cython.double][:]
+    weighted: cython.bint = W is not None
+    if weighted:
+        WV = W
+    out = np.empty((n, d + 1))
+    H: cython.double[:, :] = out
+    for i in range(n):  # (float(): Python floats when run uncompiled, as compiled: no numpy warnings)
+        if weighted:
+            w = float(WV[i])
+            if not (0.0 < w < _INF):  # also NaN
+                return None
+            lo = min(lo, w)
+            hi = max(hi, w)
+        for c in range(d):
+            H[i, c] = float(P[i, c]) * w
+            if not (abs(P[i, c]) < _INF and abs(H[i, c]) < _INF):  # also NaN
+                return None
+        H[i, d] = w
+    if weighted and not hi / lo <= max_ratio:
+        return None
+    return out
+
+
 def max_abs(P: cython.const[cython.double][:, :], ncols: cython.Py_ssize_t) -> cython.double:
     """The largest ``|P[i, c]|`` over the rows and the first ``ncols`` columns of ``P`` (0.0 if empty).
 

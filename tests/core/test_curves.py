@@ -289,3 +289,50 @@ def test_rebuilt_rows_that_overflow_go_through_the_constructors_check() -> None:
     pts = np.array([[0.0, 0.0], [1e300, 1.0]])
     with pytest.raises(NonFiniteError):
         RationalBezier._rebuilt(pts, np.array([1.0, 1e10]))
+
+
+_SPECIAL = [0.0, -0.0, 1.0, -1.0, 1e-300, 1e300, 1.7e308, -1.7e308, 5e-324, math.inf, -math.inf, math.nan, 1e15, 1e-15]
+
+
+def _built(pts: object, w: object) -> tuple[str, object]:
+    """What the constructor gives: the rows' bits, or the error's class and message."""
+    try:
+        c = RationalBezier(pts, w)  # type: ignore[arg-type]
+    except Exception as exc:  # noqa: BLE001 - compared below
+        return "error", (type(exc).__name__, str(exc))
+    return "rows", (c.homogeneous.tobytes(), c.control_points.tobytes(), c.weights.tobytes(),
+                    c.is_polynomial)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_the_compiled_rows_build_what_the_checked_rows_build(seed: int) -> None:
+    """RationalBezier's one compiled pass against the checks and numpy products it replaced
+    (relief_cad.curves._checked_rows, in the old order: points first, then weights), on points
+    and weights with zeros, infinities, NaN, overflowing products and huge weight ratios."""
+    from relief_cad.curves import _checked_rows
+
+    rng = np.random.default_rng(seed)
+    for _ in range(500):
+        n, d = int(rng.integers(2, 6)), int(rng.integers(2, 4))
+        pts = rng.normal(size=(n, d)) * 10.0 ** rng.integers(-5, 6)
+        if rng.random() < 0.4:
+            pts[rng.integers(n), rng.integers(d)] = rng.choice(_SPECIAL)
+        w = None if rng.random() < 0.3 else rng.uniform(0.1, 3.0, n)
+        if w is not None and rng.random() < 0.5:
+            w[rng.integers(n)] = rng.choice(_SPECIAL)
+        got = _built(pts, w)
+        try:
+            h = _checked_rows(np.array(pts), None if w is None else np.array(w))
+            want_h = h.tobytes()
+        except Exception as exc:  # noqa: BLE001 - compared below
+            assert got == ("error", (type(exc).__name__, str(exc)))
+            continue
+        assert got[0] == "rows" and got[1][0] == want_h  # type: ignore[index]
+        ones = np.ones(n) if w is None else np.asarray(w, dtype=float)
+        assert got[1][2] == ones.tobytes() and got[1][1] == pts.astype(float).tobytes()  # type: ignore[index]
+
+
+@pytest.mark.parametrize("weights", [[1.0, 2.0, 3.0], "ab", [1.0, -1.0]])
+def test_bad_points_are_named_before_bad_weights(weights: object) -> None:
+    with pytest.raises(NonFiniteError, match="control_points should be finite"):
+        RationalBezier([[0.0, math.nan], [1.0, 1.0]], weights)  # type: ignore[arg-type]
