@@ -168,6 +168,7 @@ class _EdgeInfo:
     _vertices: tuple[Any, Any] | None = None
     _marks: list[tuple[Any, tuple[float, float, float], float]] | None = None
     _stalls: tuple[float, list[bool], list[tuple[float, float]]] | None = None  # see _stalls
+    copy_of: int | None = None  # the index of an earlier edge of the same curve (see _mark_copies)
 
     @property
     def vertices(self) -> tuple[Any, Any]:
@@ -1092,11 +1093,40 @@ def _model_jobs(
 _ONE_PASS_ABOVE = 16
 
 
-def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float, list[_EdgeInfo]]:
+def _mark_copies(infos: list[_EdgeInfo]) -> list[_EdgeInfo]:
+    """Mark every edge whose curve is an earlier edge's, bit for bit (either way round): the others.
+
+    Copies of one edge (a drawing imported with its lines twice, a shape added to itself) all
+    overlap each other: ``n`` copies are ``n (n - 1) / 2`` whole overlaps through the core, and
+    every other edge meets each copy at the same points. An arrangement keeps one of them.
+    """
+    first: dict[tuple[Any, ...], int] = {}
+    kept = []
+    for info in infos:
+        key = tuple(tuple(map(tuple, rows)) for rows in info.rows)
+        back = tuple(tuple(map(tuple, rows[::-1])) for rows in info.rows[::-1])
+        index = first.get(key, first.get(back))
+        if index is None:
+            first[key] = info.index
+            kept.append(info)
+        else:
+            info.copy_of = index
+    return kept
+
+
+def _run(a: Any, b: Any, tol: float | None, *,
+         drop_copies: bool = False) -> tuple[str, list[_Raw], float, list[_EdgeInfo]]:
+    """The intersections of the edges of ``a`` and ``b`` (None: of ``a`` with itself), cleaned.
+
+    Returns the flavour of ``a``, the results, the model tolerance and the edge infos of ``a``.
+    ``drop_copies`` (``b`` None): an edge that repeats an earlier one's curve takes no part
+    (its info's ``copy_of`` names the earlier edge; see :func:`_mark_copies`).
+    """
     if tol is not None:
         check_tol(tol)  # the type and sign first, before the shapes are read
     flavour = flavour_of(a)
-    infos_a = _prepare(a, "a")
+    all_a = _prepare(a, "a")
+    infos_a = _mark_copies(all_a) if drop_copies and b is None else all_a
     infos_b = infos_a if b is None else _prepare(b, "b")
     everyone = infos_a if b is None else infos_a + infos_b
     box = _joint_box(everyone)
@@ -1126,7 +1156,7 @@ def _run(a: Any, b: Any, tol: float | None) -> tuple[str, list[_Raw], float, lis
         if pair and (k + 1 == len(jobs) or jobs[k + 1].ea is not job.ea or jobs[k + 1].eb is not job.eb):
             raws.extend(_clean_pair(pair, b is None and job.ea is job.eb, b is None, ftol))
             pair = []
-    return flavour, raws, ftol, infos_a
+    return flavour, raws, ftol, all_a
 
 
 # --------------------------------------------------------------------------- public API

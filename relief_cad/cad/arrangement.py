@@ -90,7 +90,7 @@ class _Graph:
     """The edges of an arrangement, the places they are cut, and which places are one vertex."""
 
     edges: list[Any]  # TopoDS_Edge, every input edge (degenerated ones included)
-    skip: set[int]  # indices of edges that take no part (degenerated)
+    skip: set[int]  # indices of edges that take no part (degenerated, or a copy of an earlier edge)
     cuts: list[_Cut] = field(default_factory=list)
     links: list[tuple[int, int]] = field(default_factory=list)  # cuts that are one vertex
     overlaps: int = 0
@@ -128,9 +128,11 @@ def _graph(a: Any, b: Any, tol: float | None) -> tuple[_Graph, int]:
     """Run the intersections and collect every cut and edge end; returns the graph and ``len(a's edges)``."""
     edges_a = ocp.edges_of(a)
     edges_b = [] if b is None else ocp.edges_of(b)
-    _, raws, ftol, infos = api._run(edges_a, None if b is None else edges_b, tol)
-    # cut points closer than OCCT can keep apart are one vertex (no piece between them)
-    graph = _Graph(edges_a + edges_b, set(), tol=ocp.shortest_piece(ftol), flavour=flavour.flavour_of(a))
+    _, raws, ftol, infos = api._run(edges_a, None if b is None else edges_b, tol, drop_copies=b is None)
+    # cut points closer than OCCT can keep apart are one vertex (no piece between them); an
+    # edge repeating an earlier one's curve has no pieces of its own (the earlier one's are its)
+    copies = {info.index for info in infos if info.copy_of is not None}
+    graph = _Graph(edges_a + edges_b, copies, tol=ocp.shortest_piece(ftol), flavour=flavour.flavour_of(a))
     graph.frame = infos[0].frame
     values = graph.values
     offset = len(edges_a)
@@ -167,7 +169,7 @@ def _add_ends(graph: _Graph) -> None:
     first_cut: dict[int, int] = {}  # vertex index in vmap -> first cut at it
     values = graph.values
     for k, edge in enumerate(graph.edges):
-        if BRep_Tool.Degenerated_s(edge):
+        if k in graph.skip or BRep_Tool.Degenerated_s(edge):
             graph.skip.add(k)
             continue
         t0, t1 = BRep_Tool.Range_s(edge)

@@ -301,6 +301,31 @@ def test_spokes_through_one_hub_meet_at_one_vertex_as_in_general_fuse():
     assert_connected(pieces)
 
 
+def test_copies_of_edges_give_the_arrangement_of_the_edges_once():
+    """A drawing with some of its edges twice (copied, some reversed): the same pieces and vertices
+    as the drawing once, and General Fuse's counts (the copies no longer meet each other pair by
+    pair: 200 copies of one circle took 3 s)."""
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_Copy
+
+    edges = glyphs_and_waves()
+    copies = [BRepBuilderAPI_Copy(e).Shape() for e in edges[::3]]
+    reversed_lines = [line((0, -6, 0), (4, 7, 0)), line((4, 7, 0), (0, -6, 0))]  # one curve both ways
+    doubled = edges + copies + reversed_lines + [BRepBuilderAPI_Copy(e).Shape() for e in copies[:5]]
+    infos = api._prepare(doubled, "a")
+    assert len(infos) - len(api._mark_copies(infos)) == len(copies) + 1 + 5  # the reversed line too
+    once = arrange(edges + reversed_lines[:1])
+    twice = arrange(doubled)
+    builder = BOPAlgo_Builder()
+    for e in edges + copies + reversed_lines:
+        builder.AddArgument(e)
+    builder.Perform()
+    for kind in (TopAbs_EDGE, TopAbs_VERTEX):
+        n_once = len(sub_shapes(ocp.make_compound(once), kind))
+        assert len(sub_shapes(ocp.make_compound(twice), kind)) == n_once
+        assert len(sub_shapes(builder.Shape(), kind)) == n_once
+    assert_connected(twice)
+
+
 # --------------------------------------------------------------------------- faces against booleans
 def shapes_overlapping():
     rect = bd.Rectangle(4, 2).face()
