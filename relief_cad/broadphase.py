@@ -289,34 +289,37 @@ def _tight_groups(pts: FloatArray, tol: float) -> tuple[IntArray, FloatArray, Fl
             cells = np.floor((pts - pts.min(axis=0)) / side)
     else:
         cells = pts  # tol 0: only equal points are one
-    _, first, cell = np.unique(cells, axis=0, return_index=True, return_inverse=True)
-    cell = _by_first(cell.reshape(-1), first)
-    lo, hi = _group_boxes(pts, cell)
+    cell, lo, hi = _groups(pts, cells)
     loose = np.linalg.norm(hi - lo, axis=1) > tol
     if loose.any():  # every point of a loose group apart
-        alone = loose[cell]
-        cell = np.where(alone, cell.max() + 1 + np.arange(n, dtype=np.int64), cell)
-        _, first, cell = np.unique(cell, return_index=True, return_inverse=True)
-        cell = _by_first(cell.reshape(-1), first)
-        lo, hi = _group_boxes(pts, cell)
+        keys = np.where(loose[cell], cell.max() + 1 + np.arange(n, dtype=np.int64), cell)
+        cell, lo, hi = _groups(pts, keys.astype(np.float64).reshape(-1, 1))
     return cell, lo, hi
 
 
-def _by_first(group: IntArray, first: IntArray) -> IntArray:
-    """Renumber groups ``0 .. m-1`` in order of their first member (``first``: each group's first index)."""
-    rank = np.empty(first.shape[0], dtype=np.int64)
-    rank[np.argsort(first, kind="stable")] = np.arange(first.shape[0], dtype=np.int64)
-    return rank[group]
+def _groups(pts: FloatArray, keys: FloatArray) -> tuple[IntArray, FloatArray, FloatArray]:
+    """Points with equal rows of ``keys`` (n, k) are one group: ``(group of each point, lo, hi)``.
 
-
-def _group_boxes(pts: FloatArray, group: IntArray) -> tuple[FloatArray, FloatArray]:
-    """The box ``(lo, hi)`` of each group's points (groups ``0 .. group.max()``)."""
-    m = int(group.max()) + 1
-    lo = np.full((m, pts.shape[1]), np.inf)
-    hi = np.full((m, pts.shape[1]), -np.inf)
-    np.minimum.at(lo, group, pts)
-    np.maximum.at(hi, group, pts)
-    return lo, hi
+    The groups are numbered in order of their first point; ``lo``, ``hi`` are the boxes of
+    their points. One sort of the rows (``lexsort``), then runs of equal rows.
+    """
+    n = pts.shape[0]
+    order = np.lexsort(keys.T[::-1])
+    sk = keys[order]
+    new = np.ones(n, dtype=bool)
+    new[1:] = np.any(sk[1:] != sk[:-1], axis=1)
+    starts = np.flatnonzero(new)
+    first = np.minimum.reduceat(order, starts)  # each run's first point
+    rank = np.empty(starts.shape[0], dtype=np.int64)
+    rank[np.argsort(first, kind="stable")] = np.arange(starts.shape[0], dtype=np.int64)
+    group = np.empty(n, dtype=np.int64)
+    group[order] = rank[np.cumsum(new) - 1]
+    sp = pts[order]
+    lo = np.empty((starts.shape[0], pts.shape[1]))
+    hi = np.empty((starts.shape[0], pts.shape[1]))
+    lo[rank] = np.minimum.reduceat(sp, starts, axis=0)
+    hi[rank] = np.maximum.reduceat(sp, starts, axis=0)
+    return group, lo, hi
 
 
 def _close_groups(pts: FloatArray, node: IntArray, lo: FloatArray, hi: FloatArray, tol: float) -> IntArray:
