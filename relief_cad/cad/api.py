@@ -1100,18 +1100,22 @@ def _mark_copies(infos: list[_EdgeInfo]) -> list[_EdgeInfo]:
     overlap each other: ``n`` copies are ``n (n - 1) / 2`` whole overlaps through the core, and
     every other edge meets each copy at the same points. An arrangement keeps one of them.
     """
-    first: dict[tuple[Any, ...], int] = {}
-    kept = []
+    boxes: dict[tuple[Any, ...], list[_EdgeInfo]] = {}  # copies share their box: only those are keyed
     for info in infos:
-        key = tuple(tuple(map(tuple, rows)) for rows in info.rows)
-        back = tuple(tuple(map(tuple, rows[::-1])) for rows in info.rows[::-1])
-        index = first.get(key, first.get(back))
-        if index is None:
-            first[key] = info.index
-            kept.append(info)
-        else:
-            info.copy_of = index
-    return kept
+        boxes.setdefault((len(info.rows), info.lo, info.hi), []).append(info)
+    for group in boxes.values():
+        if len(group) < 2:
+            continue
+        first: dict[tuple[Any, ...], int] = {}
+        for info in group:  # in input order: the first edge of a curve stays
+            key = tuple(tuple(map(tuple, rows)) for rows in info.rows)
+            back = tuple(tuple(map(tuple, rows[::-1])) for rows in info.rows[::-1])
+            index = first.get(key, first.get(back))
+            if index is None:
+                first[key] = info.index
+            else:
+                info.copy_of = index
+    return [info for info in infos if info.copy_of is None]
 
 
 def _run(a: Any, b: Any, tol: float | None, *,
