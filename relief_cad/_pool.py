@@ -15,7 +15,7 @@ from __future__ import annotations
 import os
 import threading
 from collections.abc import Callable, Sequence
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import ThreadPoolExecutor, wait
 from typing import TypeVar
 
 __all__ = ["run_ordered"]
@@ -26,6 +26,7 @@ R = TypeVar("R")
 _POOLS: dict[int, ThreadPoolExecutor] = {}
 _OWNER = [os.getpid()]  # the process whose threads the pools hold
 _LOCK = threading.Lock()
+_PREFIX = "relief_cad-pool"  # the pool's thread names
 
 
 def _pool(workers: int) -> ThreadPoolExecutor:
@@ -36,18 +37,20 @@ def _pool(workers: int) -> ThreadPoolExecutor:
             _OWNER[0] = os.getpid()
         pool = _POOLS.get(workers)
         if pool is None:
-            pool = _POOLS[workers] = ThreadPoolExecutor(max_workers=workers, thread_name_prefix="relief_cad")
+            pool = _POOLS[workers] = ThreadPoolExecutor(max_workers=workers, thread_name_prefix=_PREFIX)
         return pool
 
 
 def run_ordered(fn: Callable[[T], R], items: Sequence[T], workers: int) -> list[R]:
     """``[fn(x) for x in items]``, run on up to ``workers`` threads of the kept pool.
 
-    One item, or one worker, runs here without a pool. Otherwise every item is submitted and
-    the results are read in order, so an exception is that of the first item, in order, that
-    raised (the later items still run to their end: nothing is left half done behind it).
+    One item, or one worker, runs here without a pool, and so does a call from a task of the pool
+    (its threads would wait on tasks queued behind their own). Otherwise every item is submitted and
+    the results are read in order once all have run, so an exception is that of the first item,
+    in order, that raised, and no task is left running behind it.
     """
-    if workers <= 1 or len(items) <= 1:
-        return [fn(x) for x in items]
+    if workers <= 1 or len(items) <= 1 or threading.current_thread().name.startswith(_PREFIX):
+        return [fn(x) for x in items]  # (in a task of the pool: here, not waiting on the pool itself)
     futures = [_pool(min(workers, len(items))).submit(fn, x) for x in items]
+    wait(futures)  # every task to its end, even behind one that raised
     return [f.result() for f in futures]

@@ -91,3 +91,16 @@ def test_the_same_error_for_any_workers() -> None:
     for w in (1, 2, 3):
         message, unresolved = _first_error(tight, w, budget=1)
         assert message.startswith("BudgetExceededError") and unresolved == first[1]
+
+
+def test_a_task_of_the_pool_runs_its_own_batch_here_not_on_the_pool() -> None:
+    """Two tasks on a 2-thread pool, each asking the pool for two more: on the pool, each would wait
+    on tasks queued behind both of them, forever. Watched from a daemon thread."""
+    import threading
+
+    done: list[list[list[int]]] = []
+    inner = lambda k: run_ordered(lambda j: 10 * k + j, [0, 1], 2)  # noqa: E731
+    watcher = threading.Thread(target=lambda: done.append(run_ordered(inner, [1, 2], 2)), daemon=True)
+    watcher.start()
+    watcher.join(timeout=60)
+    assert done == [[[10, 11], [20, 21]]]
