@@ -301,6 +301,23 @@ def test_spokes_through_one_hub_meet_at_one_vertex_as_in_general_fuse():
     assert_connected(pieces)
 
 
+def test_a_pencil_of_circles_meets_at_two_vertices_as_in_general_fuse():
+    """30 circles through (0, 1) and (0, -1): 435 pairs cut there, one vertex at each point."""
+    circles = [bd.Edge.make_circle(math.hypot(1.0, c)).moved(bd.Location((c, 0, 0))).wrapped
+               for c in (0.137 * (k - 15) for k in range(30))]
+    pieces = arrange(circles)
+    for y in (1.0, -1.0):
+        at = [v for p in pieces for v in ends(p) if np.allclose(BRep_Tool.Pnt_s(v).Coord(), (0, y, 0))]
+        assert len(at) == 60 and all(at[0].IsSame(v) for v in at)
+    builder = BOPAlgo_Builder()
+    for e in circles:
+        builder.AddArgument(e)
+    builder.Perform()
+    for kind in (TopAbs_EDGE, TopAbs_VERTEX):
+        assert len(sub_shapes(ocp.make_compound(pieces), kind)) == len(sub_shapes(builder.Shape(), kind))
+    assert_connected(pieces)
+
+
 def test_copies_of_edges_give_the_arrangement_of_the_edges_once():
     """A drawing with some of its edges twice (copied, some reversed): the same pieces and vertices
     as the drawing once, and General Fuse's counts (the copies no longer meet each other pair by
