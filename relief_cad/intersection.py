@@ -525,7 +525,7 @@ def intersect_many(pairs: Iterable[tuple[RationalBezier, RationalBezier]], *,
     n = len(plist)
     out: list[IntersectionList] = [_EMPTY] * n  # every place is filled below, or an error raised
     lim = -1.0 if ftol is None else 2.0 * ftol
-    size = n if nworkers <= 1 or n < 2 * _MIN_CHUNK else max(_MIN_CHUNK, -(-n // (4 * nworkers)))
+    size = max(1, n) if nworkers <= 1 or n < 2 * _MIN_CHUNK else max(_MIN_CHUNK, -(-n // (4 * nworkers)))
     # many small objects at once: keep the cyclic GC from rescanning them repeatedly
     gc_enabled = gc.isenabled()
     gc.disable()

@@ -104,3 +104,9 @@ def test_a_task_of_the_pool_runs_its_own_batch_here_not_on_the_pool() -> None:
     watcher.start()
     watcher.join(timeout=60)
     assert done == [[[10, 11], [20, 21]]]
+
+
+@pytest.mark.parametrize("workers", [1, 2])
+def test_no_pairs_give_no_lists(workers: int) -> None:
+    assert intersect_many([], workers=workers) == []
+    assert intersect_many(iter(()), workers=workers) == []
