@@ -1133,13 +1133,14 @@ def _run(a: Any, b: Any, tol: float | None, *,
     infos_a = _mark_copies(all_a) if drop_copies and b is None else all_a
     infos_b = infos_a if b is None else _prepare(b, "b")
     everyone = infos_a if b is None else infos_a + infos_b
-    box = _joint_box(everyone)
+    model = all_a if b is None else all_a + infos_b  # copies too: the tolerance and plane of every edge
+    box = _joint_box(model)
     # one tolerance for the whole model: the default or the given tol checked against the edges' size,
     # raised to the rounding floor of their control points; not capped again per segment pair
-    ftol = ModelTolerance(max(_default_tol(everyone, box), rounding_floor(np.array(box)))) if tol is None \
-        else check_model_tol(tol, [e.edge for e in everyone])
-    frame = _common_frame(everyone, ftol, box)
-    _set_plane(everyone, frame)
+    ftol = ModelTolerance(max(_default_tol(model, box), rounding_floor(np.array(box)))) if tol is None \
+        else check_model_tol(tol, [e.edge for e in model])
+    frame = _common_frame(model, ftol, box)
+    _set_plane(model, frame)
     if frame is not None and len(infos_a) * len(infos_b) > _ONE_PASS_ABOVE:  # many planar edges: one pass
         jobs, known = _model_jobs(infos_a, infos_b, b is None, ftol)
         answers = _solve(jobs, ftol, b is None, known)

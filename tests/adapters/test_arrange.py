@@ -343,6 +343,20 @@ def test_copies_of_edges_give_the_arrangement_of_the_edges_once():
     assert_connected(twice)
 
 
+def test_a_copy_with_a_larger_occt_tolerance_still_sets_the_model_tolerance():
+    """The default tolerance is the largest OCCT tolerance of the edges, copies included: which of
+    two copies is kept must not change it (a line ending 1e-4 short of another meets it at 1e-3)."""
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_Copy
+
+    base = line((0, 0, 0), (10, 0, 0))
+    loose = downcast_edge(BRepBuilderAPI_Copy(base).Shape())
+    BRep_Builder().UpdateEdge(loose, 1e-3)
+    short = line((5, 5, 0), (5, 1e-4, 0))
+    counts = [len(sub_shapes(ocp.make_compound(arrange(edges)), TopAbs_EDGE))
+              for edges in ([base, loose, short], [loose, base, short])]
+    assert counts == [3, 3]  # the short line's end is on the long line, which is cut there
+
+
 # --------------------------------------------------------------------------- faces against booleans
 def shapes_overlapping():
     rect = bd.Rectangle(4, 2).face()
