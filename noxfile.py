@@ -63,6 +63,7 @@ SANITIZED_TESTS = [
     "tests/core/test_fuzz_core.py", "tests/core/test_planar_fuzz.py", "tests/core/test_space_fuzz.py",
     "tests/core/test_contacts.py", "tests/core/test_curves.py", "tests/core/test_touches_near_crossings.py",
     "tests/functional/test_contact_corpus.py", "tests/functional/test_planar_corpus.py",
+    "tests/core/test_pool.py",  # pack_pairs writes the batch's curves into a growing buffer
 ]
 # what those tests import (pyproject's test extra without the workbench and CAD parts), and the build
 SANITIZED_DEPS = ["numpy>=1.26", "cython>=3.1", "setuptools>=77", "pytest>=8", "pytest-timeout>=2.2",
