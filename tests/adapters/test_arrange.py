@@ -89,6 +89,27 @@ def line(p, q):
     return BRepBuilderAPI_MakeEdge(gp_Pnt(*p), gp_Pnt(*q)).Edge()
 
 
+def general_fuse(shapes):
+    """OCCT's General Fuse (BOPAlgo_Builder) of the shapes: its result shape."""
+    builder = BOPAlgo_Builder()
+    for s in shapes:
+        builder.AddArgument(raw(s))
+    builder.Perform()
+    return builder.Shape()
+
+
+def counts(shape):
+    """(edges, vertices) of a shape or of a list of pieces, each counted once."""
+    shape = shape if isinstance(shape, TopoDS_Shape) else ocp.make_compound([raw(p) for p in shape])
+    return tuple(len(sub_shapes(shape, kind)) for kind in (TopAbs_EDGE, TopAbs_VERTEX))
+
+
+def assert_one_vertex_at(pieces, point, n):
+    """``n`` piece ends lie at ``point``, and they are one TopoDS_Vertex (IsSame)."""
+    at = [v for p in pieces for v in ends(p) if np.allclose(BRep_Tool.Pnt_s(v).Coord(), point)]
+    assert len(at) == n and all(at[0].IsSame(v) for v in at)
+
+
 # --------------------------------------------------------------------------- shared vertices
 def test_crossing_lines_share_the_cut_vertex():
     pieces = arrange([line((0, 0, 0), (2, 2, 0)), line((0, 2, 0), (2, 0, 0))])
@@ -271,13 +292,7 @@ def glyphs_and_waves():
 def test_glyphs_over_waves_match_general_fuse_counts():
     edges = glyphs_and_waves()
     pieces = arrange(edges)
-    builder = BOPAlgo_Builder()
-    for e in edges:
-        builder.AddArgument(e)
-    builder.Perform()
-    mine = ocp.make_compound(pieces)
-    for kind in (TopAbs_EDGE, TopAbs_VERTEX):
-        assert len(sub_shapes(mine, kind)) == len(sub_shapes(builder.Shape(), kind))
+    assert counts(pieces) == counts(general_fuse(edges))
     assert_connected(pieces)
 
 
@@ -290,14 +305,8 @@ def test_spokes_through_one_hub_meet_at_one_vertex_as_in_general_fuse():
               for a in (k * math.pi / 40 + 0.1 for k in range(40))]
     edges = [e.wrapped for e in spokes] + [bd.Edge.make_circle(6).moved(bd.Location((*hub, 0))).wrapped]
     pieces = arrange(edges)
-    at_hub = [v for p in pieces for v in ends(p) if np.allclose(BRep_Tool.Pnt_s(v).Coord(), (*hub, 0))]
-    assert len(at_hub) == 80 and all(at_hub[0].IsSame(v) for v in at_hub)
-    builder = BOPAlgo_Builder()
-    for e in edges:
-        builder.AddArgument(e)
-    builder.Perform()
-    for kind in (TopAbs_EDGE, TopAbs_VERTEX):
-        assert len(sub_shapes(ocp.make_compound(pieces), kind)) == len(sub_shapes(builder.Shape(), kind))
+    assert_one_vertex_at(pieces, (*hub, 0), 80)
+    assert counts(pieces) == counts(general_fuse(edges))
     assert_connected(pieces)
 
 
@@ -307,14 +316,8 @@ def test_a_pencil_of_circles_meets_at_two_vertices_as_in_general_fuse():
                for c in (0.137 * (k - 15) for k in range(30))]
     pieces = arrange(circles)
     for y in (1.0, -1.0):
-        at = [v for p in pieces for v in ends(p) if np.allclose(BRep_Tool.Pnt_s(v).Coord(), (0, y, 0))]
-        assert len(at) == 60 and all(at[0].IsSame(v) for v in at)
-    builder = BOPAlgo_Builder()
-    for e in circles:
-        builder.AddArgument(e)
-    builder.Perform()
-    for kind in (TopAbs_EDGE, TopAbs_VERTEX):
-        assert len(sub_shapes(ocp.make_compound(pieces), kind)) == len(sub_shapes(builder.Shape(), kind))
+        assert_one_vertex_at(pieces, (0, y, 0), 60)
+    assert counts(pieces) == counts(general_fuse(circles))
     assert_connected(pieces)
 
 
@@ -332,14 +335,7 @@ def test_copies_of_edges_give_the_arrangement_of_the_edges_once():
     assert len(infos) - len(api._mark_copies(infos)) == len(copies) + 1 + 5  # the reversed line too
     once = arrange(edges + reversed_lines[:1])
     twice = arrange(doubled)
-    builder = BOPAlgo_Builder()
-    for e in edges + copies + reversed_lines:
-        builder.AddArgument(e)
-    builder.Perform()
-    for kind in (TopAbs_EDGE, TopAbs_VERTEX):
-        n_once = len(sub_shapes(ocp.make_compound(once), kind))
-        assert len(sub_shapes(ocp.make_compound(twice), kind)) == n_once
-        assert len(sub_shapes(builder.Shape(), kind)) == n_once
+    assert counts(twice) == counts(once) == counts(general_fuse(edges + copies + reversed_lines))
     assert_connected(twice)
 
 
@@ -385,11 +381,7 @@ def test_face_areas_equal_occt_common_and_cuts(pair):
 def test_three_shapes_face_areas_equal_general_fuse_faces():
     shapes = shapes_overlapping()
     faces = arrange(shapes, faces=True)
-    builder = BOPAlgo_Builder()
-    for s in shapes:
-        builder.AddArgument(s.wrapped)
-    builder.Perform()
-    want = sorted(area(f) for f in sub_shapes(builder.Shape(), TopAbs_FACE))
+    want = sorted(area(f) for f in sub_shapes(general_fuse(shapes), TopAbs_FACE))
     assert np.allclose(sorted(area(f) for f in faces), want, rtol=1e-7, atol=1e-9)
 
 
