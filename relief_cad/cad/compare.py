@@ -533,139 +533,162 @@ def _match_side(
     exacts_a: list[ExactCurve],
     exacts_b: list[ExactCurve],
     tol: float,
-    self_mode: bool,
     refine_all: bool = True,
 ) -> tuple[list[Match], list[Disagreement]]:
+    """Match both sides' results edge pair by edge pair, and judge what is left (:class:`_PairMatch`)."""
+    by_pair: dict[tuple[int, int], tuple[list[EdgeResult], list[EdgeResult]]] = {}
+    for k, side in enumerate((relief, occt)):
+        for r in side:
+            by_pair.setdefault((r.index_a, r.index_b), ([], []))[k].append(r)
     agreed: list[Match] = []
     disagreements: list[Disagreement] = []
-    pairs = sorted({(r.index_a, r.index_b) for r in relief} | {(r.index_a, r.index_b) for r in occt})
-    for ia, ib in pairs:
-        ca, cb = exacts_a[ia], exacts_b[ib]
-        pad_a = 1e-9 * (ca.last - ca.first) + 1e-12
-        rel = _merge_overlaps([r for r in relief if (r.index_a, r.index_b) == (ia, ib)], pad_a)
-        occ = _merge_overlaps([r for r in occt if (r.index_a, r.index_b) == (ia, ib)], pad_a)
-        used_r: set[int] = set()
-        used_o: set[int] = set()
-        # 1. overlaps whose t-ranges meet
-        for i, r in enumerate(rel):
+    for (ia, ib), (rel, occ) in sorted(by_pair.items()):
+        pair = _PairMatch(exacts_a[ia], exacts_b[ib], rel, occ, tol, refine_all)
+        pair.overlaps()
+        pair.points()
+        pair.loose_points()
+        pair.leftovers()
+        agreed.extend(pair.agreed)
+        disagreements.extend(pair.disagreements)
+    return agreed, disagreements
+
+
+class _PairMatch:
+    """The matching of one edge pair's results, in four steps called in order.
+
+    1. :meth:`overlaps`: overlaps whose ``t`` ranges meet; those whose ends differ by more than
+       tol are judged (whose range is right?);
+    2. :meth:`points`: points within tol of each other, nearest first;
+    3. :meth:`loose_points`: points the arbiter refines to one true point (or one touch);
+    4. :meth:`leftovers`: every result still unmatched, judged by the arbiter.
+
+    ``rel`` and ``occ`` are one side's results each, with fragmented overlaps joined.
+    """
+
+    def __init__(self, ca: ExactCurve, cb: ExactCurve, rel: list[EdgeResult], occ: list[EdgeResult],
+                 tol: float, refine_all: bool) -> None:
+        self.ca, self.cb, self.tol, self.refine_all = ca, cb, tol, refine_all
+        self.pad = 1e-9 * (ca.last - ca.first) + 1e-12
+        self.rel = _merge_overlaps(rel, self.pad)
+        self.occ = _merge_overlaps(occ, self.pad)
+        self.used_r: set[int] = set()
+        self.used_o: set[int] = set()
+        self.agreed: list[Match] = []
+        self.disagreements: list[Disagreement] = []
+        self._refined: dict[tuple[str, int], PointCheck] = {}
+        self._cand: list[tuple[float, int, int]] = []
+
+    def _take(self, match: Match, i: int, j: int) -> None:
+        self.agreed.append(match)
+        self.used_r.add(i)
+        self.used_o.add(j)
+
+    def overlaps(self) -> None:
+        """Step 1: overlaps whose ``t`` ranges meet match; ends farther apart than tol are judged."""
+        ca, pad = self.ca, self.pad
+        for i, r in enumerate(self.rel):
             if not isinstance(r, EdgeOverlap):
                 continue
-            for j, o in enumerate(occ):
-                if not isinstance(o, EdgeOverlap):
+            for j, o in enumerate(self.occ):
+                if not isinstance(o, EdgeOverlap) or min(r.t[1], o.t[1]) < max(r.t[0], o.t[0]) - pad:
                     continue
-                if min(r.t[1], o.t[1]) >= max(r.t[0], o.t[0]) - pad_a:
-                    if i in used_r or j in used_o:
-                        # a fragment of an overlap already matched (one side split it)
-                        used_r.add(i)
-                        used_o.add(j)
-                        continue
-                    dt = max(abs(r.t[0] - o.t[0]), abs(r.t[1] - o.t[1]))
-                    du = max(abs(r.u[0] - o.u[0]), abs(r.u[1] - o.u[1]))
-                    pa = [float(x) for x in ca.value(r.t[0])], [float(x) for x in ca.value(r.t[1])]
-                    pb = [float(x) for x in ca.value(o.t[0])], [float(x) for x in ca.value(o.t[1])]
-                    dist = max(_pt_dist(pa[0], pb[0]), _pt_dist(pa[1], pb[1]))
-                    agreed.append(Match(r, o, dist, dt, du))
-                    used_r.add(i)
-                    used_o.add(j)
-        # 1b. matched overlaps whose ends differ by more than tol: whose range is right?
-        for m in [m for m in agreed if isinstance(m.relief, EdgeOverlap) and m.distance > tol]:
-            if (m.relief.index_a, m.relief.index_b) != (ia, ib):
-                continue
+                if i in self.used_r or j in self.used_o:
+                    # a fragment of an overlap already matched (one side split it)
+                    self.used_r.add(i)
+                    self.used_o.add(j)
+                    continue
+                dt = max(abs(r.t[0] - o.t[0]), abs(r.t[1] - o.t[1]))
+                du = max(abs(r.u[0] - o.u[0]), abs(r.u[1] - o.u[1]))
+                pa = [[float(x) for x in ca.value(s)] for s in r.t]
+                pb = [[float(x) for x in ca.value(s)] for s in o.t]
+                dist = max(_pt_dist(pa[0], pb[0]), _pt_dist(pa[1], pb[1]))
+                self._take(Match(r, o, dist, dt, du), i, j)
+        for m in [m for m in self.agreed if m.distance > self.tol]:
             assert isinstance(m.relief, EdgeOverlap) and isinstance(m.occt, EdgeOverlap)
-            agreed.remove(m)
-            disagreements.append(_judge_ranges(ca, cb, m.relief, m.occt, tol))
-        # 2. points within tol
-        cand = []
-        for i, r in enumerate(rel):
-            if i in used_r or not isinstance(r, EdgeIntersection):
+            self.agreed.remove(m)
+            self.disagreements.append(_judge_ranges(self.ca, self.cb, m.relief, m.occt, self.tol))
+
+    def _check(self, side: str, k: int, res: EdgeIntersection) -> PointCheck:
+        """The arbiter's refinement of one side's point (``side`` "r" or "o", ``k`` its index), cached."""
+        if (side, k) not in self._refined:
+            ca, cb = self.ca, self.cb
+            chk = arbitrate_point(ca, cb, res.t, res.u, tol=self.tol)
+            if ca is cb and _one_point_of(ca, chk.t, chk.u, self.tol):
+                # a double point of one edge that collapsed onto t == u, or the closing point
+                # of a closed edge (its seam, at both ends of its range): not a double point
+                chk = dataclasses.replace(chk, holds=False, kind="miss", distance=math.inf)
+            self._refined[(side, k)] = chk
+        return self._refined[(side, k)]
+
+    def _open_points(self) -> list[tuple[float, int, int, EdgeIntersection, EdgeIntersection]]:
+        """Pairs of points not matched yet, nearest first: (distance, i, j, relief's, OCCT's)."""
+        out = []
+        for d, i, j in self._cand:
+            r, o = self.rel[i], self.occ[j]
+            if i not in self.used_r and j not in self.used_o:
+                assert isinstance(r, EdgeIntersection) and isinstance(o, EdgeIntersection)
+                out.append((d, i, j, r, o))
+        return out
+
+    def points(self) -> None:
+        """Step 2: points within tol of each other match, nearest first."""
+        for i, r in enumerate(self.rel):
+            if i in self.used_r or not isinstance(r, EdgeIntersection):
                 continue
-            for j, o in enumerate(occ):
-                if j in used_o or not isinstance(o, EdgeIntersection):
-                    continue
-                d = _pt_dist(r.point, o.point)
-                cand.append((d, i, j))
-        cand.sort()
-        refined: dict[tuple[str, int], PointCheck] = {}
-
-        def ref(
-            side: str,
-            k: int,
-            res: EdgeIntersection,
-            refined: dict[tuple[str, int], PointCheck] = refined,
-            ca: ExactCurve = ca,
-            cb: ExactCurve = cb,
-        ) -> PointCheck:
-            if (side, k) not in refined:
-                chk = arbitrate_point(ca, cb, res.t, res.u, tol=tol)
-                if ca is cb and _one_point_of(ca, chk.t, chk.u, tol):
-                    # a double point of one edge that collapsed onto t == u, or the closing point
-                    # of a closed edge (its seam, at both ends of its range): not a double point
-                    chk = dataclasses.replace(chk, holds=False, kind="miss", distance=math.inf)
-                refined[(side, k)] = chk
-            return refined[(side, k)]
-
-        def errors(i: int, j: int, r: EdgeIntersection, o: EdgeIntersection) -> tuple[float, float]:
-            if not refine_all:
-                return math.nan, math.nan
-            truth = ref("r", i, r)
-            return _pt_dist(r.point, truth.point), _pt_dist(o.point, truth.point)
-
-        for d, i, j in cand:
-            if i in used_r or j in used_o or d > tol:
+            for j, o in enumerate(self.occ):
+                if j not in self.used_o and isinstance(o, EdgeIntersection):
+                    self._cand.append((_pt_dist(r.point, o.point), i, j))
+        self._cand.sort()
+        for d, i, j, r, o in self._open_points():
+            if i in self.used_r or j in self.used_o or d > self.tol:
                 continue
-            r, o = rel[i], occ[j]
-            assert isinstance(r, EdgeIntersection) and isinstance(o, EdgeIntersection)
-            er, eo = errors(i, j, r, o)
-            agreed.append(Match(r, o, d, abs(r.t - o.t), abs(r.u - o.u), False, er, eo))
-            used_r.add(i)
-            used_o.add(j)
-        # 2b. loose matches (tangents are located to ~sqrt(tol), some answers are inaccurate):
-        # the arbiter refines every unmatched point; two that refine to one true point match, and
-        # so do two tangent roots of one touch that rounding split (_one_touch)
+            er = eo = math.nan
+            if self.refine_all:
+                truth = self._check("r", i, r)
+                er, eo = _pt_dist(r.point, truth.point), _pt_dist(o.point, truth.point)
+            self._take(Match(r, o, d, abs(r.t - o.t), abs(r.u - o.u), False, er, eo), i, j)
+
+    def loose_points(self) -> None:
+        """Step 3: points the arbiter refines to one true point, or to one touch that rounding split.
+
+        Tangents are located to about ``sqrt(tol)``, and some answers are inaccurate.
+        """
         loose = []
-        for d, i, j in cand:
-            if i in used_r or j in used_o:
-                continue
-            r, o = rel[i], occ[j]
-            assert isinstance(r, EdgeIntersection) and isinstance(o, EdgeIntersection)
-            pr, po = ref("r", i, r), ref("o", j, o)
+        for d, i, j, r, o in self._open_points():
+            pr, po = self._check("r", i, r), self._check("o", j, o)
             dd = _pt_dist(pr.point, po.point)
-            if pr.holds and po.holds and (dd <= tol or _one_touch(ca, cb, pr, po, tol)):
-                loose.append((dd, d, i, j))
-        for _dd, d, i, j in sorted(loose):
-            if i in used_r or j in used_o:
+            if pr.holds and po.holds and (dd <= self.tol or _one_touch(self.ca, self.cb, pr, po, self.tol)):
+                loose.append((dd, d, i, j, r, o))
+        for _dd, d, i, j, r, o in sorted(loose, key=lambda x: x[:4]):
+            if i in self.used_r or j in self.used_o:
                 continue
-            r, o = rel[i], occ[j]
-            assert isinstance(r, EdgeIntersection) and isinstance(o, EdgeIntersection)
-            pr, po = ref("r", i, r), ref("o", j, o)
+            pr, po = self._check("r", i, r), self._check("o", j, o)
             er, eo = _pt_dist(r.point, pr.point), _pt_dist(o.point, po.point)
-            agreed.append(Match(r, o, d, abs(r.t - o.t), abs(r.u - o.u), True, er, eo))
-            used_r.add(i)
-            used_o.add(j)
-        # 3. what is left: arbitrate
-        for side, mine, theirs, used_m, _used_t in (
-            ("relief_cad", rel, occ, used_r, used_o),
-            ("occt", occ, rel, used_o, used_r),
-        ):
+            self._take(Match(r, o, d, abs(r.t - o.t), abs(r.u - o.u), True, er, eo), i, j)
+
+    def leftovers(self) -> None:
+        """Step 4: every result still unmatched, on either side, judged by the arbiter."""
+        ca, cb, pad, tol = self.ca, self.cb, self.pad, self.tol
+        for side, mine, theirs, used in (("relief_cad", self.rel, self.occ, self.used_r),
+                                         ("occt", self.occ, self.rel, self.used_o)):
             other: Side = "occt" if side == "relief_cad" else "relief_cad"
             for k, claim in enumerate(mine):
-                if k in used_m:
+                if k in used:
                     continue
                 counter: tuple[EdgeResult, ...]
-                if isinstance(claim, EdgeOverlap) and ca is cb and _one_stretch(claim, pad_a):
+                if isinstance(claim, EdgeOverlap) and ca is cb and _one_stretch(claim, pad):
                     counter, verdict = (), _one_stretch_verdict(claim, other)
                 elif isinstance(claim, EdgeOverlap):
-                    counter, verdict = _judge_overlap(ca, cb, claim, theirs, pad_a, tol, side, other)
+                    counter, verdict = _judge_overlap(ca, cb, claim, theirs, pad, tol, side, other)
                 else:
                     counter = tuple(
-                        x for x in theirs if isinstance(x, EdgeOverlap) and _on_claim(claim, x, ca, cb, pad_a)
+                        x for x in theirs if isinstance(x, EdgeOverlap) and _on_claim(claim, x, ca, cb, pad)
                     )
                     if counter:
                         continue  # judged from the overlap's side
-                    check = ref("r" if side == "relief_cad" else "o", k, claim)
+                    check = self._check("r" if side == "relief_cad" else "o", k, claim)
                     verdict = _judge_point(check, claim, mine, theirs, k, tol, side, other, ca, cb)
-                disagreements.append(Disagreement(side, claim, counter, verdict))
-    return agreed, disagreements
+                self.disagreements.append(Disagreement(side, claim, counter, verdict))
 
 
 def _one_stretch(claim: EdgeOverlap, pad: float) -> bool:
@@ -1005,7 +1028,7 @@ def compare(
     with mpmath.workdps(ARBITER_DIGITS):
         exacts_a = _exact_curves(usable_a, len(edges_a))
         exacts_b = exacts_a if b is None else _exact_curves(usable_b, len(edges_b))
-        agreed, dis = _match_side(relief_res, occt_res, exacts_a, exacts_b, float(tol), b is None, refine)
+        agreed, dis = _match_side(relief_res, occt_res, exacts_a, exacts_b, float(tol), refine)
     times["arbiter"] = time.perf_counter() - t2
     routes = list(dict.fromkeys(r.route for r in occt_res))
     return Comparison(
