@@ -58,6 +58,7 @@ try:
     from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeFace
     from OCP.BRepGProp import BRepGProp
     from OCP.GCPnts import GCPnts_AbscissaPoint
+    from OCP.Geom import Geom_TrimmedCurve
     from OCP.GeomAPI import GeomAPI_ProjectPointOnCurve
     from OCP.gp import gp_Ax3, gp_Dir, gp_Pln, gp_Pnt
     from OCP.GProp import GProp_GProps
@@ -279,10 +280,7 @@ def _global_curve(edge: Any) -> tuple[Any, Any]:
 def _make_piece(curve: Any, trsf: Any, v1: Any, v2: Any, t1: float, t2: float) -> TopoDS_Edge:
     if trsf is not None:
         t1, t2 = curve.TransformedParameter(t1, trsf), curve.TransformedParameter(t2, trsf)
-    maker = BRepBuilderAPI_MakeEdge(curve, v1, v2, t1, t2)
-    if not maker.IsDone():
-        raise OcctError(f"BRepBuilderAPI_MakeEdge failed on [{t1}, {t2}] (error {maker.Error()})")
-    return maker.Edge()
+    return ocp.edge_on_curve(curve, t1, t2, v1, v2)
 
 
 @dataclass
@@ -306,11 +304,11 @@ def _edge_pieces(k: int, graph: _Graph, places: list[tuple[float, int]], vertice
     pieces: list[_Piece] = []
     start_t, start_n = places[0]
     for t, node in places[1:]:
-        if t - start_t <= eps:
-            continue  # one parameter, one place (merged with its neighbour as one vertex)
         mid = 0.5 * (start_t + t)
-        if node == start_n and math.dist(values(k, mid), centres[node]) <= graph.tol:
-            continue  # a sliver from a vertex back to itself: no piece
+        if node == start_n and (t - start_t <= eps or math.dist(values(k, mid), centres[node]) <= graph.tol):
+            continue  # one place twice, or a sliver from a vertex back to itself: no piece
+        if t <= start_t:
+            continue  # two vertices at one parameter (their points off the curve): no piece can join them
         piece = _make_piece(curve, trsf, vertices[start_n], vertices[node], start_t, t)
         pieces.append(_Piece(piece, (start_n, node), (k, mid), curve, (start_t, t)))
         start_t, start_n = t, node
@@ -420,7 +418,7 @@ def _bounded_faces(edges: list[TopoDS_Edge], plane: gp_Pln) -> list[Any]:
     shapes = TopTools_ListOfShape()
     for i in range(1, frame_edges.Extent() + 1):
         shapes.Append(frame_edges.FindKey(i))
-    for e in edges:
+    for e in map(_face_edge, edges):
         forward = downcast_edge(e.Oriented(TopAbs_FORWARD))
         shapes.Append(forward)
         shapes.Append(forward.Reversed())
@@ -435,6 +433,27 @@ def _bounded_faces(edges: list[TopoDS_Edge], plane: gp_Pln) -> list[Any]:
     if builder.HasErrors():
         raise OcctError("BOPAlgo_BuilderFace failed on the arranged edges")
     return [f for f in builder.Areas() if not _touches(f, frame_edges) and _signed_area(f) > 0.0]
+
+
+def _face_edge(edge: TopoDS_Edge) -> TopoDS_Edge:
+    """The edge for ``BOPAlgo_BuilderFace``: a chord for a piece of a periodic curve too short for OCCT.
+
+    A piece shorter in parameter than ``PConfusion`` (:func:`.ocp.edge_on_curve`) is valid, but
+    the face builder does not close a loop through it: a circle of radius 1,000 cut 5e-7 apart gave
+    no disk. Its chord between the same vertices is within ``Precision::Confusion`` of it
+    (checked at its middle), and the faces are built with that.
+    """
+    curve = BRep_Tool.Curve_s(edge, 0.0, 0.0)
+    t1, t2 = BRep_Tool.Range_s(edge)
+    if curve is None or not isinstance(curve, Geom_TrimmedCurve) or t2 - t1 > Precision.PConfusion_s():
+        return edge
+    v1, v2 = TopExp.FirstVertex_s(edge), TopExp.LastVertex_s(edge)
+    p1, p2 = BRep_Tool.Pnt_s(v1), BRep_Tool.Pnt_s(v2)
+    chord_mid = [0.5 * (a + b) for a, b in zip(p1.Coord(), p2.Coord(), strict=True)]
+    if math.dist(chord_mid, BRepAdaptor_Curve(edge).Value(0.5 * (t1 + t2)).Coord()) > Precision.Confusion_s():
+        return edge
+    maker = BRepBuilderAPI_MakeEdge(v1, v2)
+    return maker.Edge() if maker.IsDone() else edge
 
 
 def _signed_area(face: Any) -> float:

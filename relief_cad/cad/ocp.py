@@ -44,17 +44,16 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from OCP.BRep import BRep_Tool
+from OCP.BRep import BRep_Builder, BRep_Tool
 from OCP.BRepAdaptor import BRepAdaptor_Curve
 from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeVertex
-from OCP.Geom import (
-    Geom_BezierCurve,
-)
+from OCP.Geom import Geom_BezierCurve, Geom_TrimmedCurve
 from OCP.Geom2d import Geom2d_BezierCurve
 from OCP.GeomAbs import GeomAbs_Shape
 from OCP.GeomConvert import GeomConvert_ApproxCurve, GeomConvert_BSplineCurveToBezierCurve
 from OCP.gp import gp_Pnt, gp_Pnt2d
 from OCP.Precision import Precision
+from OCP.TopAbs import TopAbs_FORWARD, TopAbs_REVERSED
 from OCP.TopLoc import TopLoc_Location
 from OCP.TopoDS import TopoDS_Edge, TopoDS_Vertex
 
@@ -74,6 +73,7 @@ __all__ = [
     "APPROXIMATION_TOLERANCE",
     "MAX_CONIC_SPAN",
     "Segment",
+    "edge_on_curve",
     "edge_segments",
     "edges_of",
     "edge_tolerance",
@@ -781,13 +781,59 @@ def trim_edge(edge: Any, t0: float, t1: float) -> TopoDS_Edge:
     curve = BRep_Tool.Curve_s(e, loc, 0.0, 0.0)
     if curve is None:
         raise UnsupportedCurveError("cannot trim an edge without a 3D curve")
-    maker = BRepBuilderAPI_MakeEdge(curve, lo, hi)
-    if not maker.IsDone():
-        raise OcctError(f"BRepBuilderAPI_MakeEdge failed on [{lo}, {hi}] (error {maker.Error()})")
-    new = maker.Edge()
+    new = edge_on_curve(curve, lo, hi)
     if not loc.IsIdentity():
         new = downcast_edge(new.Located(loc))
     return downcast_edge(new.Oriented(e.Orientation()))
+
+
+def edge_on_curve(curve: Any, t0: float, t1: float, v0: Any = None, v1: Any = None) -> TopoDS_Edge:
+    """An edge on ``curve`` over ``[t0, t1]`` (``t0 < t1``), between vertices ``v0`` and ``v1`` or new ones.
+
+    As ``BRepBuilderAPI_MakeEdge``, but a range of a periodic curve shorter than
+    ``Precision::PConfusion`` (1e-9) stays that range: ``MakeEdge`` takes it for a whole period
+    (cuts 5e-7 apart on a circle of radius 1,000, 5e-10 rad, gave a full circle between them).
+    Such an edge is put together as ``MakeEdge`` does it, on a trimmed curve around the range:
+    the same parameters, not periodic (``MakeEdge`` would take the trimmed curve's basis again).
+
+    Raises
+    ------
+    OcctError
+        If OCCT cannot make the edge.
+
+    Examples
+    --------
+    >>> from OCP.Geom import Geom_Circle
+    >>> from OCP.gp import gp_Ax2, gp_Dir
+    >>> circle = Geom_Circle(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 1000.0)
+    >>> t0, t1 = BRep_Tool.Range_s(edge_on_curve(circle, 1.0, 1.0 + 5e-10))
+    >>> t1 - t0 < 1e-9
+    True
+    """
+    if t1 - t0 <= Precision.PConfusion_s() and basis_curve(curve).IsPeriodic():
+        return _short_periodic_edge(basis_curve(curve), t0, t1, v0, v1)
+    if v0 is None:
+        maker = BRepBuilderAPI_MakeEdge(curve, t0, t1)
+    else:
+        maker = BRepBuilderAPI_MakeEdge(curve, v0, v1, t0, t1)
+    if not maker.IsDone():
+        raise OcctError(f"BRepBuilderAPI_MakeEdge failed on [{t0}, {t1}] (error {maker.Error()})")
+    return maker.Edge()
+
+
+def _short_periodic_edge(basis: Any, t0: float, t1: float, v0: Any, v1: Any) -> TopoDS_Edge:
+    if v0 is None:
+        v0, v1 = (make_vertex(basis.Value(t).Coord()) for t in (t0, t1))
+    width = 0.1 * basis.Period()
+    builder = BRep_Builder()
+    edge = TopoDS_Edge()
+    builder.MakeEdge(edge, Geom_TrimmedCurve(basis, t0 - width, t1 + width), Precision.Confusion_s())
+    builder.Add(edge, v0.Oriented(TopAbs_FORWARD))
+    builder.Add(edge, v1.Oriented(TopAbs_REVERSED))
+    builder.Range(edge, t0, t1)
+    builder.UpdateVertex(v0, t0, edge, 0.0)
+    builder.UpdateVertex(v1, t1, edge, 0.0)
+    return edge
 
 
 def to_geom_bezier(curve: RationalBezier) -> Geom_BezierCurve:

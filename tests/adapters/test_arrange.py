@@ -104,9 +104,13 @@ def counts(shape):
     return tuple(len(sub_shapes(shape, kind)) for kind in (TopAbs_EDGE, TopAbs_VERTEX))
 
 
-def assert_one_vertex_at(pieces, point, n):
-    """``n`` piece ends lie at ``point``, and they are one TopoDS_Vertex (IsSame)."""
-    at = [v for p in pieces for v in ends(p) if np.allclose(BRep_Tool.Pnt_s(v).Coord(), point)]
+def assert_one_vertex_at(pieces, point, n, within=None):
+    """``n`` piece ends lie at ``point`` (``np.allclose``, or ``within`` a distance), and they are one TopoDS_Vertex."""
+    def close(v):
+        p = BRep_Tool.Pnt_s(v).Coord()
+        return np.allclose(p, point) if within is None else math.dist(p, point) <= within
+
+    at = [v for p in pieces for v in ends(p) if close(v)]
     assert len(at) == n and all(at[0].IsSame(v) for v in at)
 
 
@@ -208,6 +212,53 @@ def test_part_of_size_1e_6_is_cut_where_occt_can_keep_pieces_apart(kind):
     pa, pb = split_both(a, b)
     assert_connected(list(pa) + list(pb), tol=1e-7)
     assert_connected(arrange([a, b]), tol=1e-7)
+
+
+def length(shape):
+    props = GProp_GProps()
+    BRepGProp.LinearProperties_s(raw(shape), props)
+    return props.Mass()
+
+
+def test_cuts_close_in_parameter_but_apart_in_space_are_both_kept():
+    """A line of parameter range 2e6 crossed at x = 1e6 and 1e6 + 1e-6 (found by a hunt).
+
+    The cuts are 1e-12 of the range apart in parameter, but 10 tol apart in space: two vertices,
+    a piece of 1e-6 between them, and both crossing lines joined to the long line.
+    """
+    long = line((0, 0, 0), (2e6, 0, 0))
+    cutters = [line((x, -1, 0), (x, 1, 0)) for x in (1e6, 1e6 + 1e-6)]
+    pieces = arrange([long, *cutters])
+    assert counts(pieces) == counts(general_fuse([long, *cutters])) == (7, 8)
+    on_long = sorted(BRep_Tool.Range_s(downcast_edge(raw(p))) for p in pieces if length(p) < 1e-5 or length(p) > 10)
+    assert np.allclose(on_long, [(0.0, 1e6), (1e6, 1e6 + 1e-6), (1e6 + 1e-6, 2e6)], rtol=0, atol=1e-9)
+    for x in (1e6, 1e6 + 1e-6):
+        assert_one_vertex_at(pieces, (x, 0, 0), 4, within=1e-7)
+    assert_connected(pieces, tol=1e-7)
+
+
+@pytest.mark.parametrize("radius, gap", [(1e3, 5e-7), (1e5, 1e-6), (1e5, 3e-7)])
+def test_a_piece_of_a_circle_below_occt_parameter_confusion_stays_short(radius, gap):
+    """Cuts ``gap`` apart at the top of a circle: 5e-10 rad and less, below ``PConfusion`` (1e-9).
+
+    ``BRepBuilderAPI_MakeEdge`` took the piece between them for a whole circle (twice the length,
+    a face of twice the disk's area); at 3e-12 rad the cut was dropped. The piece keeps its
+    length, the lines stay joined to the circle, and the faces are the disk.
+    """
+    circle = BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), radius)).Edge()
+    cutters = [line((x, radius - 1, 0), (x, radius + 1, 0)) for x in (0.0, gap)]
+    pieces = arrange([circle, *cutters])
+    assert len(pieces) == 7
+    assert length(ocp.make_compound([raw(p) for p in pieces])) == pytest.approx(2 * math.pi * radius + 4, rel=1e-12)
+    assert min(length(p) for p in pieces) == pytest.approx(gap, rel=1e-3)
+    for x in (0.0, gap):
+        assert_one_vertex_at(pieces, (x, radius, 0), 4, within=1e-7)
+    assert_connected(pieces, tol=1e-7)
+    cut = api.split(circle, cutters)
+    assert sorted(length(p) for p in cut)[0] == pytest.approx(gap, rel=1e-3)
+    faces = arrange([circle, *cutters], faces=True)
+    assert len(faces) == 1 and area(faces[0]) == pytest.approx(math.pi * radius**2, rel=1e-9)
+    assert BRepCheck_Analyzer(raw(faces[0])).IsValid()
 
 
 @pytest.mark.parametrize("depth", [1e-9, 1e-10])

@@ -14,6 +14,7 @@ import pytest
 from OCP.BRep import BRep_Builder, BRep_Tool
 from OCP.BRepAdaptor import BRepAdaptor_Curve
 from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
+from OCP.BRepCheck import BRepCheck_Analyzer
 from OCP.Geom import (
     Geom_BezierCurve,
     Geom_BSplineCurve,
@@ -450,6 +451,17 @@ def test_trim_edge_keeps_location_and_curve():
         np.testing.assert_allclose(ocp.edge_value(piece, t), ocp.edge_value(edge, t), atol=1e-14)
     with pytest.raises(DegenerateCurveError):
         ocp.trim_edge(edge, 1.0, 1.0)
+
+
+@pytest.mark.parametrize("width", [5e-10, 3e-12])
+def test_trim_edge_of_a_periodic_curve_below_occt_parameter_confusion_stays_short(width):
+    """A piece of a circle narrower than ``PConfusion`` (1e-9): MakeEdge alone gives a whole circle."""
+    edge = BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 1000.0)).Edge()
+    piece = ocp.trim_edge(edge, 1.0, 1.0 + width)
+    assert BRep_Tool.Range_s(piece) == (1.0, 1.0 + width)
+    start, end = (ocp.edge_value(piece, t) for t in BRep_Tool.Range_s(piece))
+    assert math.dist(start, end) == pytest.approx(1000.0 * width, rel=1e-3)
+    assert BRepCheck_Analyzer(piece).IsValid()
 
 
 def test_located_copies_each_get_their_own_placement() -> None:
