@@ -820,6 +820,8 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
     crossings: list[int] = []  # per kept point: the distinct crossings it stands for
     floor: float | None = None  # the rounding floor of both edges, found on first use
     for r in sorted((r for r in raws if r.kind != "overlap"), key=lambda r: r.distance):
+        if r.kind != "crossing" and points and _beside_crossing(r, points):
+            continue
         t, u = r.t, r.u
         if same:
             # the same point of one edge (a segment joint), or the closing point of a closed edge
@@ -852,6 +854,23 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
     # an even number of crossings within tol of each other is a touch: b crosses a and back
     return merged + [_Raw(p.ea, p.eb, p.t, p.u, p.point, "tangent", p.distance) if n % 2 == 0 and n else p
                      for p, n in zip(points, crossings, strict=True)]
+
+
+def _beside_crossing(r: _Raw, points: list[_Raw]) -> bool:
+    """True when touch ``r`` is one contact with a crossing in ``points``, found again across spans.
+
+    The crossing within 1e-3 of a span of it in both parameters (the core's rule for one contact,
+    :func:`_near_params`), ``r`` off the other edge by more than the rounding floor, and the edges
+    within ``max(4 d, floor)`` between the two (``d`` its distance). Two circles of radius 10 tol
+    into each other at their seams (a span joint of both) cross 1e-4 either side of the joint;
+    the spans' ends meet within tol there, and that touch was reported beside both crossings
+    (at tol + 5e-15, 1.0000008e-7 from each other at radius 1,000: beyond tol).
+    """
+    floor = _pair_floor(r)
+    if r.distance <= floor:
+        return False
+    lim = max(4.0 * r.distance, floor)
+    return any(p.kind == "crossing" and _near_params(p, r) and _stretch_within(p, r, lim) for p in points)
 
 
 def _join_stretches(points: list[_Raw], crossings: list[int]) -> tuple[list[_Raw], list[int]]:

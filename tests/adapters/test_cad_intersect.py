@@ -699,6 +699,26 @@ def test_two_crossings_within_tol_of_each_other_are_one_touch(scale: float, cent
     assert math.dist(found[0].point, (scale, 0.0, 0.0)) <= 1e-6 * scale
 
 
+@pytest.mark.parametrize("scale", [10.0, 1e3, 1e5])
+@pytest.mark.parametrize("excess", [0.0, 5e-15, 1e-13])
+def test_circles_tol_into_each_other_at_their_seams_cross_twice_and_touch_nowhere(scale, excess) -> None:
+    """Circles ``d`` = tol (+ ``excess``) into each other, the lens around both seams (a span joint).
+
+    They cross at angles +-acos(1 - d / 2r) and part by at most ``d`` between. The spans' ends
+    meet within tol at the seams, and that touch was reported beside both crossings: at radius
+    1,000 with d = tol + 5e-15, 1.0000008e-7 off (beyond ``tol_used``). Found by a hunt; a sweep
+    of 420 such pairs (radius 10 to 1e5, tol 1e-7 and 1e-6, d within 1e-6 of tol) is now clean.
+    """
+    tol = 1e-7
+    d = tol + excess
+    a, b = _circle(scale), _circle(scale, (2.0 * scale - d, 0.0))
+    found = api.intersections(a, b, tol=tol)
+    assert [r.kind for r in found] == ["crossing", "crossing"], found
+    angle = math.acos(1.0 - d / (2.0 * scale))
+    assert sorted(min(r.t, 2 * math.pi - r.t) for r in found) == pytest.approx([angle, angle], rel=1e-4)
+    assert all(r.distance <= found.tol_used for r in found)
+
+
 def test_a_crossing_near_a_touch_stays_a_crossing_and_a_touch() -> None:
     """Quartics (workbench corpus, tangent family, seed 31) crossing at t 0.3014 and touching at 0.3081.
 
