@@ -95,15 +95,17 @@ def _two_roots(pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssiz
     away, 1e-10 off it between; a curve crossing its mirror image 7e-4 before it touches it. The
     rounding noise of a touch parts by no more than the touch's own distance. An end meeting closer
     than rounding (``<= rnd``) is also another root than a crossing more than 1e-4 away in both
-    parameters (the crossing of a loop thinner than tol next to the end: a self-intersection's
-    pieces meeting near a cusp).
+    parameters, the curves parting by more than ``floor`` between (the crossing of a loop thinner
+    than tol next to the end: a self-intersection's pieces meeting near a cusp). Within ``floor``
+    all along, the crossing is the rounding of the end's own contact: ellipses of size 0.02 in
+    contact of order four at their seam (one common point) crossed 2.5e-4 either side of it.
     """
     e: cython.Py_ssize_t = i if pts[i, 4] == 2.0 or pts[i, 3] == k_tangent else j
     r: cython.Py_ssize_t = j if e == i else i
     if not ((pts[e, 4] == 2.0 or pts[e, 3] == k_tangent) and pts[r, 4] == 1.0 and pts[r, 3] == k_crossing):
         return False
     if (pts[e, 4] == 2.0 and pts[e, 2] <= rnd and abs(pts[i, 0] - pts[j, 0]) > 1e-4
-            and abs(pts[i, 1] - pts[j, 1]) > 1e-4):
+            and abs(pts[i, 1] - pts[j, 1]) > 1e-4 and gap > floor):
         return True
     return not _one_contact(gap, pts[e, 2], floor)
 
@@ -195,9 +197,11 @@ def _flank_of(HA: cython.const[cython.double][:, :], HB: cython.const[cython.dou
       4.5e-8 off the line there, within tol, and was reported twice (a spline and a copy moved
       across and turned by 1e-4: 8e-2 of a span before its end).
 
-    Next means within 1e-2 in both parameters (1e-1 for an end meeting: a crossing at a small angle
-    has a long flank), the curves between them no farther apart than ``max(4 d, floor)`` (``d`` the
-    flank point's distance; one contact, as in :func:`_two_roots`). An end meeting within 1e-3 of
+    Next means within 1e-1 in both parameters (a crossing at a small angle has a long flank, and
+    so has a contact of high order: an ellipse and its osculating circle at a vertex, 2.4e-8 apart
+    0.02 of a span from it, where a closest approach 1.6e-2 away made an overlap with the contact),
+    the curves between them no farther apart than ``max(4 d, floor)`` (``d`` the flank point's
+    distance; one contact, as in :func:`_two_roots`). An end meeting within 1e-3 of
     the root in both is left to the rule of one contact there, which keeps the end: a circle pushed
     1e-9 through another at its seam is one touch there, not crossings on either side of it.
     """
@@ -213,7 +217,7 @@ def _flank_of(HA: cython.const[cython.double][:, :], HB: cython.const[cython.dou
     elif pts[j, 4] == 2.0 and pts[i, 4] == 1.0 and pts[i, 5] == 1.0 and pts[j, 2] > floor:
         e = j
         end = True
-    near: cython.double = 1e-1 if end else 1e-2
+    near: cython.double = 1e-1
     dt = abs(pts[i, 0] - pts[j, 0])
     du = abs(pts[i, 1] - pts[j, 1])
     if e < 0 or dt > near or du > near or (end and dt <= 1e-3 and du <= 1e-3):

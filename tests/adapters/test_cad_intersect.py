@@ -719,6 +719,36 @@ def test_circles_tol_into_each_other_at_their_seams_cross_twice_and_touch_nowher
     assert all(r.distance <= found.tol_used for r in found)
 
 
+OSCULATING = {  # (scale) -> two curves with one common point, a contact of order four, and that point
+    "ellipse and its osculating circle at the minor vertex": lambda s: (
+        bd.Edge.make_ellipse(2 * s, s), _circle(4 * s, (0.0, -3 * s)), (0.0, s)),
+    "ellipse and its osculating circle at the major vertex (the seam)": lambda s: (
+        bd.Edge.make_ellipse(2 * s, s), _circle(0.5 * s, (1.5 * s, 0.0)), (2 * s, 0.0)),
+    "two ellipses of one vertex curvature (the seam)": lambda s: (
+        bd.Edge.make_ellipse(2 * s, s), bd.Edge.make_ellipse(3 * s, math.sqrt(1.5) * s).moved(
+            bd.Location((-s, 0.0, 0.0))), (2 * s, 0.0)),
+    "parabola and its osculating circle": lambda s: (
+        BRepBuilderAPI_MakeEdge(Geom_BezierCurve(_poles([(-s, s), (0.0, -s), (s, s)]))).Edge(),
+        _circle(0.5 * s, (0.0, 0.5 * s)), (0.0, 0.0)),
+}
+
+
+@pytest.mark.parametrize("scale", [0.01, 0.1, 1.0, 10.0, 1000.0])
+@pytest.mark.parametrize("name", list(OSCULATING))
+def test_a_contact_of_order_four_is_one_touch_at_every_scale(name: str, scale: float) -> None:
+    """Curves with one common point where they osculate: eliminating y leaves a fourfold root.
+
+    They stay within tol (1e-7) of each other 0.02 of a span either side, and came out as an
+    overlap (or two, split at the seam) at scales 1 and 10, and at 0.01 as the touch with two
+    crossings 2.5e-4 either side, where rounding makes them cross (found by a hunt; the arbiter and
+    OCCT give one tangent point). The touch is one contact, at the common point.
+    """
+    a, b, point = OSCULATING[name](scale)
+    found = api.intersections(a, b)
+    assert [r.kind for r in found] == ["tangent"], found
+    assert math.dist(found[0].point, (*point, 0.0)) <= 1e-9 * scale
+
+
 def test_a_crossing_near_a_touch_stays_a_crossing_and_a_touch() -> None:
     """Quartics (workbench corpus, tangent family, seed 31) crossing at t 0.3014 and touching at 0.3081.
 
