@@ -445,3 +445,35 @@ def test_curves_pickle_and_copy_after_intersect_with_the_same_results() -> None:
         assert np.array_equal(twin.control_points, a.control_points)
         assert np.array_equal(twin.weights, a.weights)
         assert [(r.t, r.u, tuple(r.point)) for r in intersect(twin, b)] == first
+
+
+# a degree-9 curve with weights 0.02 to 8.5 (pinched near its end) crossing a rational line twice
+PINCH_A = ([[-0.5390001250584786, -0.8675337305621369], [-0.01488245582279868, -0.2126581912407961]],
+           [0.048709381617553296, 12.73384361970186])
+PINCH_B = ([[-0.3294157973624503, 0.6815591467135167], [-0.8486726645132132, 0.0040211342168290365],
+            [0.007743273126198824, 0.7131274353220738], [-0.41440902338859265, -0.5768220559837949],
+            [0.3200078123931891, -0.5261304215805158], [-0.947028803728799, -0.8438250553718667],
+            [-0.784603416998104, 0.0370826639605204], [0.16305987764289598, 0.6104909708835251],
+            [0.6124379801602586, -0.9175796308106929], [-0.3515810647361879, -0.2931743502634383]],
+           [0.6408835869850659, 0.021910432886090687, 8.542233833650315, 6.578696702905413,
+            0.24942496086580931, 5.764791910855718, 0.01810300905135507, 0.0256477320068008,
+            2.526536153056703, 0.022873204613034416])
+
+
+@pytest.mark.parametrize("scale", [1.0, 1e-8, 1e8])
+def test_a_crossing_next_to_a_pinched_end_is_a_crossing_at_every_scale(scale: float) -> None:
+    """The second crossing (sin 0.995, 2.3e-4 before b's end, where b's curvature is about 1e12)
+    was a 'tangent' at scale 1 and a 'crossing' at 1e-8 and 1e8 (found by a hunt): no Newton seed
+    reached it, and the closest approach, 1.16 times the rounding level off, failed the angle test
+    of a rounded touch. Both contacts are roots at which the curves meet at a clear angle."""
+    from relief_cad import intersect
+
+    a = RationalBezier(np.array(PINCH_A[0]) * scale, PINCH_A[1])
+    b = RationalBezier(np.array(PINCH_B[0]) * scale, PINCH_B[1])
+    found = intersect(a, b)
+    assert [r.kind for r in found] == ["crossing", "crossing"], found
+    for r in found:
+        assert math.dist(a(r.t), b(r.u)) <= 1e-12 * scale
+        da, db = a.derivative(r.t), b.derivative(r.u)
+        sine = abs(da[0] * db[1] - da[1] * db[0]) / (np.linalg.norm(da) * np.linalg.norm(db))
+        assert sine > 0.9
