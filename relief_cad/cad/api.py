@@ -981,10 +981,16 @@ def _same_place(p: _Raw, r: _Raw, tol: float) -> bool:
     Within 1e-3 tol of each other, at the same parameter of each edge (a point found at the joint
     of two segments maps to the knot from both) or, on a closed edge, at both of its ends (a
     crossing at the seam). Place alone is not enough: at 1/100 scale the rounded spans of tangent
-    circles cross twice 8e-11 apart, within 1e-3 of the 1e-7 floor of tol.
+    circles cross twice 8e-11 apart, within 1e-3 of the 1e-7 floor of tol. On one edge the pair may
+    come either way round: a double point at the seam of a closed spline is ``(0, u)`` from the
+    first piece and ``(u, period)`` from the last, once its parameters are put in order (it was
+    counted as two crossings there, a touch).
     """
-    return math.dist(p.point, r.point) <= 1e-3 * tol and _same_param(p.ea, p.t, r.t) and _same_param(
-        p.eb, p.u, r.u)
+    if math.dist(p.point, r.point) > 1e-3 * tol:
+        return False
+    if _same_param(p.ea, p.t, r.t) and _same_param(p.eb, p.u, r.u):
+        return True
+    return p.ea is p.eb and _same_param(p.ea, p.t, r.u) and _same_param(p.ea, p.u, r.t)
 
 
 def _same_param(e: _EdgeInfo, t: float, s: float) -> bool:

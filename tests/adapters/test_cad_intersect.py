@@ -531,6 +531,26 @@ def test_looping_spline_crosses_itself_across_spans():
     assert all(h.t < h.u and h.index_a == h.index_b == 0 for h in hits)
 
 
+@pytest.mark.parametrize("count", [7, 9, 11])
+def test_a_closed_spline_crossing_itself_at_its_seam_crosses_once(count: int) -> None:
+    """A periodic figure-eight through ``count`` points of a lemniscate, one of them its double point,
+    where the spline starts and ends (found by a hunt). Its first piece gives the crossing as
+    ``(0, u)`` and its last as ``(u, period)``: that pair was counted as two crossings, a touch. The
+    branches cross there at a clear angle (OCCT's own derivatives)."""
+    th = np.linspace(0, 2 * np.pi, count, endpoint=False)
+    eight = bd.Spline(*[(10 * np.sin(t), 10 * np.sin(t) * np.cos(t)) for t in th], periodic=True)
+    found = api.intersections(eight)
+    assert [r.kind for r in found] == ["crossing"], found
+    assert math.dist(found[0].point, (0.0, 0.0, 0.0)) <= 1e-9
+    curve = BRepAdaptor_Curve(eight.wrapped)
+    dirs = []
+    for t in (found[0].t, found[0].u):
+        p, v = gp_Pnt(), gp_Vec()
+        curve.D1(t, p, v)
+        dirs.append(np.array(v.Coord()) / v.Magnitude())
+    assert np.linalg.norm(np.cross(*dirs)) > 0.5
+
+
 def test_near_miss_within_tolerance_is_tangent_and_outside_is_nothing():
     c = circle(XY, 1.0)
     near = seg(XY, (-2, 1 + 1e-9), (2, 1 + 1e-9))
