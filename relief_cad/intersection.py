@@ -352,7 +352,8 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
     point, direction : array_like, shape (2,)
         A point of the line and its (nonzero) direction.
     tol : float, optional
-        Distance tolerance (default from the curve's control points and ``point``);
+        Distance tolerance (default from the curve's control points and the point of the line
+        nearest their middle: where along the line ``point`` lies does not matter);
         raised to the rounding floor, capped by the curve's size as in :func:`intersect`.
     budget, on_budget
         As for :func:`intersect`.
@@ -392,38 +393,52 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
         raise ShapeError(f"point and direction should have shape (2,), not {p.shape} and {d.shape}")
     if not (np.all(np.isfinite(p)) and np.all(np.isfinite(d))):
         raise NonFiniteError("point and direction should be finite")
-    dd = float(d @ d)
-    if dd == 0.0:
-        raise InvalidInputError("direction should be nonzero, not (0, 0)")
+    length = math.hypot(float(d[0]), float(d[1]))
+    if length == 0.0:
+        raise InvalidInputError(f"direction should be nonzero, not ({float(d[0]):g}, {float(d[1]):g})")
     check_on_budget(on_budget)
     nbudget = check_budget(budget)
-    pts = curve.control_points
     given = check_tol(tol)
-    s = (pts - p) @ d / dd
-    lo = float(min(s.min(), 0.0))
-    hi = float(max(s.max(), 0.0))
-    # the default (curve and point), or the given tol checked against the curve
-    base = default_tolerance(curve, p[None, :]) if given is None else resolve_tolerance(given, curve)
-    # 1 % beyond the curve's extent along the line, in the curve's own scale (a fixed pad of one
-    # direction length made the segment, and its rounding floor, huge beside a tiny curve), and
-    # longer than the tolerance: a curve shorter than the rounding of its coordinates (one ulp at
-    # x = 1) made both ends of the segment round to one point, and its crossing was lost
-    ext = max(hi - lo, float(np.ptp(pts, axis=0).max()) / math.sqrt(dd))
-    pad = max(0.01 * ext, 4.0 * base / math.sqrt(dd))
-    seg = np.array([p + (lo - pad) * d, p + (hi + pad) * d])
-    # raised to the rounding floor of the segment that stands for the line
-    ftol = max(base, rounding_floor(curve, RationalBezier(seg)))
-    res = _planar(pts, curve.weights, seg, np.ones(2), ftol, nbudget)
+    pts = curve.control_points
+    # the line through the foot of the curve's middle, by a unit direction: the curve and its
+    # line segment stay in the curve's own scale, however far the given point lies along the line
+    # (at 1e12 along, the tolerance grew to 1e3 and the crossing came out 0.5 off) and however
+    # long the direction (|d|^2 overflowed at 1e160 and was subnormal at 1e-160)
+    e = np.array([float(d[0]) / length, float(d[1]) / length])
+    shift = float((0.5 * (pts.min(axis=0) + pts.max(axis=0)) - p) @ e)
+    foot = p + shift * e
+    res, ftol = _line_results(curve, foot, e, given, nbudget)
     items: list[Result] = []
     for r in res:
         if isinstance(r, Intersection):
             pt = curve.evaluate(r.t) if r.kind == "crossing" else r.point
-            su = float((np.asarray(pt) - p) @ d / dd)
+            su = (float((np.asarray(pt) - foot) @ e) + shift) / length
             items.append(Intersection(r.t, su, r.point, r.kind, r.distance))
         else:  # a stretch of the curve along the line: u is the line's parameter at its ends
-            u0, u1 = (float((curve.evaluate(t) - p) @ d / dd) for t in r.t)
+            u0, u1 = ((float((curve.evaluate(t) - foot) @ e) + shift) / length for t in r.t)
             items.append(Overlap(t=r.t, u=(u0, u1)))
     return finish(IntersectionList(items, res.unresolved, ftol), on_budget)
+
+
+def _line_results(curve: RationalBezier, foot: FloatArray, e: FloatArray, given: float | None,
+                  budget: int) -> tuple[IntersectionList, float]:
+    """The planar results of ``curve`` against the line ``foot + s e`` (``e`` a unit vector), and the tol."""
+    pts = curve.control_points
+    s = (pts - foot) @ e
+    lo = float(min(s.min(), 0.0))
+    hi = float(max(s.max(), 0.0))
+    # the default (curve and foot), or the given tol checked against the curve
+    base = default_tolerance(curve, foot[None, :]) if given is None else resolve_tolerance(given, curve)
+    # 1 % beyond the curve's extent along the line, in the curve's own scale (a fixed pad of one
+    # direction length made the segment, and its rounding floor, huge beside a tiny curve), and
+    # longer than the tolerance: a curve shorter than the rounding of its coordinates (one ulp at
+    # x = 1) made both ends of the segment round to one point, and its crossing was lost
+    ext = max(hi - lo, float(np.ptp(pts, axis=0).max()))
+    pad = max(0.01 * ext, 4.0 * base)
+    seg = np.array([foot + (lo - pad) * e, foot + (hi + pad) * e])
+    # raised to the rounding floor of the segment that stands for the line
+    ftol = max(base, rounding_floor(curve, RationalBezier(seg)))
+    return _planar(pts, curve.weights, seg, np.ones(2), ftol, budget), ftol
 
 
 def _batch_job(out: list[IntersectionList], start: int, part: list[tuple[RationalBezier, RationalBezier]],

@@ -239,6 +239,25 @@ def test_intersect_line_on_a_curve_shorter_than_the_rounding_floor_is_not_lost()
     assert min(res[0].u) < 0.0 < max(res[0].u)  # the line's point (u = 0) is on the stretch
 
 
+@pytest.mark.parametrize("far", [1e8, 1e12, 1e15])
+def test_intersect_line_does_not_depend_on_where_its_point_lies(far: float) -> None:
+    """y = 0.5 given by a point ``far`` along it (found by a hunt): the default tolerance grew with
+    that point (to 1e3 at 1e12) and the crossing came out at the segment's start, 0.5 off."""
+    r = intersect_line(RationalBezier([[0.0, 0.0], [1.0, 1.0]]), (far, 0.5), (1.0, 0.0))
+    assert r.tol_used < 1e-8
+    assert [(x.kind, x.t, tuple(x.point)) for x in r] == [("crossing", 0.5, (0.5, 0.5))]
+    assert r[0].u == pytest.approx(0.5 - far, abs=4 * math.ulp(far))
+
+
+@pytest.mark.parametrize("length", [1e-300, 1e-170, 1e-160, 1e160, 1e200])
+def test_intersect_line_does_not_depend_on_the_length_of_its_direction(length: float) -> None:
+    """x + y = 0.5 by a direction of length ``length``: ``d @ d`` overflowed (no result), was
+    subnormal (u off by 1e-5) or zero ("direction should be nonzero" for a nonzero one)."""
+    r = intersect_line(RationalBezier([[0.0, 0.0], [1.0, 1.0]]), (0.5, 0.0), (length, -length))
+    assert [(x.kind, x.t) for x in r] == [("crossing", 0.25)]
+    assert r[0].u * length == pytest.approx(-0.25, rel=1e-14)
+
+
 def test_intersect_line_rejects_bad_input() -> None:
     with pytest.raises(InvalidInputError):
         intersect_line(PARABOLA, (0, 0), (0, 0))
