@@ -96,7 +96,7 @@ from .errors import (
     NonFiniteError,
     ShapeError,
 )
-from .pieces import along_chord, monotone_pieces
+from .pieces import along_chord, monotone_pieces, one_place
 from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
 from .space import intersect_space, space_pair
 from .tolerances import (
@@ -222,8 +222,8 @@ def _self_planar(curve: RationalBezier, tol: float, budget: int) -> Intersection
                     continue
                 t = s0 + r.t * (s1 - s0) if r.t not in (0.0, 1.0) else (s0 if r.t == 0.0 else s1)
                 u = r0 + r.u * (r1 - r0) if r.u not in (0.0, 1.0) else (r0 if r.u == 0.0 else r1)
-                if abs(t - u) <= 1e-7:
-                    continue  # the joint of adjacent pieces
+                if abs(t - u) <= 1e-7 or one_place(curve, t, u, tol):
+                    continue  # the joint of adjacent pieces, or both sides of a sharp tip
                 if any(isinstance(q, Intersection) and abs(q.t - t) <= 1e-9 and abs(q.u - u) <= 1e-9
                        for q in items):
                     continue

@@ -61,7 +61,7 @@ from ._types import FloatArray
 from .contacts import needs_refining, range_exponent, refine_contacts, refine_self, whole_overlap
 from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError
-from .pieces import monotone_pieces
+from .pieces import monotone_pieces, one_place
 from .relief import ReliefPerspective, central_projection
 from .results import Intersection, IntersectionList, ParameterBox, Result, finish
 from .tolerances import _sampled_tolerance, is_point_like, resolve_tolerance
@@ -376,8 +376,8 @@ def _self_rows(curve: RationalBezier, tol: float, budget: int) -> FloatArray:
                 r[3] = a0 + r[3] * (a1 - a0)
                 r[2] = b0 + r[2] * (b1 - b0)
                 r[4] = b0 + r[4] * (b1 - b0)
-                if abs(r[2] - r[1]) <= 1e-9:
-                    continue
+                if abs(r[2] - r[1]) <= 1e-9 or one_place(curve, r[1], r[2], tol):
+                    continue  # one place of the curve (both sides of a sharp tip)
                 rows.append(r)
     if not rows:
         return np.empty((0, SPACE_COLS))

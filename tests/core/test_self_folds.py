@@ -12,6 +12,7 @@ overlap's ends are where one run reaches the other's end value. Nothing of relie
 
 from __future__ import annotations
 
+import math
 from math import comb
 
 import numpy as np
@@ -210,3 +211,36 @@ def test_a_curve_folding_back_over_the_end_of_another_overlaps_it_on_both_runs(d
     for t, u in truth:
         assert any(np.allclose(o.t, t, atol=1e-9, rtol=0) and np.allclose(o.u, u, atol=1e-9, rtol=0)
                    for o in res), (res, t, u)
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+@pytest.mark.parametrize("lam", [1.0, 1e3, 1e4, 1e5])
+def test_a_loop_squeezed_near_the_start_by_its_weights_is_found(dim: int, lam: float) -> None:
+    """The nodal cubic x = T^2 - c, y = T (T^2 - c) (T = 2s - 1; z = T^2 in space), weighted by
+    ``lam ** i``: the same curve, its loop within 3e-4 of the start at lam 1e4 (found by a hunt).
+    Pieces were cut 10 (12) times at most, so the piece holding the whole loop was kept whole, and
+    the double point was lost with ``complete=True``. Truth: T = -+sqrt(c), mapped by the weights
+    (s = t / (lam (1 - t) + t), t the unweighted parameter)."""
+    c = 0.25 if dim == 2 else 0.01
+    n = 3
+    ts = np.linspace(0.0, 1.0, n + 1)
+    T = 2.0 * ts - 1.0
+    samples = np.c_[T * T - c, T * (T * T - c)] if dim == 2 else np.c_[T * T - c, T * (T * T - c), T * T]
+    basis = np.array([[math.comb(n, i) * s**i * (1 - s) ** (n - i) for i in range(n + 1)] for s in ts])
+    poles = np.linalg.solve(basis, samples)
+    curve = RationalBezier(poles, [lam**i for i in range(n + 1)])
+    found = intersect(curve)
+    truth = [t / (lam * (1.0 - t) + t) for t in ((1 - math.sqrt(c)) / 2, (1 + math.sqrt(c)) / 2)]
+    assert found.complete and [r.kind for r in found] == ["crossing"], found
+    assert (found[0].t, found[0].u) == pytest.approx(truth, rel=1e-9)
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+@pytest.mark.parametrize("lift", [1e-7, 1e-6])
+def test_the_sharp_tip_of_a_near_cusp_is_no_double_point(dim: int, lift: float) -> None:
+    """A cubic whose cusp is lifted into a sharp smooth tip: no loop (Newton on a(s) = a(t), s < t,
+    from either side of the tip runs to s = t). Cut deep around the tip, its pieces meet within tol
+    on both sides of it, 1.5e-6 apart in parameter: that is one place of the curve, not a touch."""
+    pts = [[0.0, 0.0], [2.0, 2.0], [0.0, 2.0 + lift], [2.0, 0.0]]
+    curve = RationalBezier([p + [0.0] for p in pts] if dim == 3 else pts)
+    assert list(intersect(curve)) == []
