@@ -113,6 +113,23 @@ def _two_roots(pts: cython.double[:, :], i: cython.Py_ssize_t, j: cython.Py_ssiz
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
+def _root_resolution(HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :],
+                     t: cython.double, u: cython.double, rnd: cython.double, wa: cython.double[:, :],
+                     wb: cython.double[:, :]) -> cython.double:
+    """How far apart the curves at a root may come out at ``(t, u)``, in the frame.
+
+    16 ``rnd``, and 4 ulps of each parameter times the curve's speed there: a curve running fast,
+    pinched by its weights, moves by more than rounding between neighbouring parameters.
+    """
+    _ax, _ay, adx, ady, _a2, _a3 = _eval(HA, t, wa)
+    _bx, _by, bdx, bdy, _b2, _b3 = _eval(HB, u, wb)
+    ulp: cython.double = 2.220446049250313e-16
+    return 16.0 * rnd + 4.0 * ulp * (hypot(adx, ady) * max(abs(t), ulp) + hypot(bdx, bdy) * max(abs(u), ulp))
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
 def _gap_between(HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :],
                  t0: cython.double, u0: cython.double, t1: cython.double, u1: cython.double,
                  wa: cython.double[:, :], wb: cython.double[:, :]) -> cython.double:
@@ -974,11 +991,12 @@ def _pair_core(
                 if npts + 1 > pts.shape[0]:
                     pts = _room(pts, npts + 1)
                 cert = 0.0
-                if 0.0 <= d <= 16.0 * rnd:
-                    # a root that the rounding of strongly weighted data hides (64 ulps apart): a
-                    # degree-9 curve of weights 0.02 to 8.5 crossing a line at sin 0.995, 2.3e-4
-                    # before its pinched end, came out a touch 1.16 rnd off. Certified simple there
-                    # (double-double Newton at a fixed point), it is a root as any certified one
+                if 0.0 <= d <= _root_resolution(HA, HB, t, u, rnd, wa, wb):
+                    # a root that the rounding of strongly weighted data hides: a degree-9 curve of
+                    # weights 0.02 to 8.5 crossing a line at sin 0.995, 2.3e-4 before its pinched
+                    # end, came out a touch 1.16 rnd off; an arc of end weight 1e-5 crossing a line
+                    # where it moves 1e5 times faster than elsewhere, 44 rnd off. Certified simple
+                    # there (double-double Newton at a fixed point), it is a root as any certified one
                     t2, u2, ok = _polish_dd(HA, HB, t, u, wa, wb, da, db, 10)
                     if ok and abs(t2 - t) <= 1e-9 and abs(u2 - u) <= 1e-9:
                         t = t2

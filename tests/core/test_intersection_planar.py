@@ -496,3 +496,18 @@ def test_a_crossing_next_to_a_pinched_end_is_a_crossing_at_every_scale(scale: fl
         da, db = a.derivative(r.t), b.derivative(r.u)
         sine = abs(da[0] * db[1] - da[1] * db[0]) / (np.linalg.norm(da) * np.linalg.norm(db))
         assert sine > 0.9
+
+
+@pytest.mark.parametrize("w", [1e-4, 1e-5, 1e-6, 1e-7, 1e-8])
+def test_a_crossing_where_an_end_weight_makes_the_curve_run_fast_is_a_crossing(w: float) -> None:
+    """The arc (0, 0), (1, 1), (2, 0) of weights 1, 1, ``w`` crosses x = 1.5 at 45 degrees, 1e-4 to
+    1e-8 from its end, where it moves 1e4 to 1e8 times faster than elsewhere: the best double
+    parameters leave the curves 44 rounding units apart, and the crossing came out a 'tangent'
+    (found by a hunt). Truth: x(t) = 1.5 solved as a quadratic in t."""
+    a = RationalBezier([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]], [1.0, 1.0, w])
+    found = intersect(a, RationalBezier([[1.5, -1.0], [1.5, 2.0]]))
+    # 2 t (1 - t) + 2 w t^2 = 1.5 ((1 - t)^2 + 2 t (1 - t) + w t^2), as c2 t^2 + c1 t + c0 = 0
+    c2, c1, c0 = -2.0 + 2.0 * w - 1.5 * (w - 1.0), 2.0, -1.5
+    truth = [r.real for r in np.roots([c2, c1, c0]) if 0.0 < r.real < 1.0]
+    assert [r.kind for r in found] == ["crossing"], found
+    assert found[0].t == pytest.approx(truth[0], abs=1e-12)
