@@ -238,6 +238,8 @@ def _chains(a: RationalBezier, b: RationalBezier, pts: list[Intersection], ovs: 
                 break
             sense = sense or math.copysign(1.0, nxt[1] - cur[1])
             cur = nxt
+            if _turns(a, cur[0]) or _turns(b, cur[1]):
+                break  # an overlap ends where either curve turns back (a line run four times)
         if cur != start:
             out.append(Overlap(t=(start[0], cur[0]), u=(start[1], cur[1])))
             i = nodes.index(cur)  # a chain ended by a fold: the next one may start there
@@ -303,7 +305,8 @@ def _overlaps(a: RationalBezier, b: RationalBezier, items: list[Result], tol: fl
     return kept + list(found)
 
 
-def self_overlaps(pieces: Sequence[tuple[Overlap, bool]]) -> list[Overlap]:
+def self_overlaps(pieces: Sequence[tuple[Overlap, bool]],
+                  curve: RationalBezier | None = None) -> list[Overlap]:
     """Merge self-overlaps of pieces that continue each other into one (ends exact).
 
     Parameters
@@ -311,6 +314,10 @@ def self_overlaps(pieces: Sequence[tuple[Overlap, bool]]) -> list[Overlap]:
     pieces : sequence of (Overlap, bool)
         Overlaps in the curve's own parameters with ``t`` before ``u``; the flag is ignored
         (kept for callers that track where each came from).
+    curve : RationalBezier, optional
+        The curve: two overlaps meeting where it turns back (at ``t`` or at ``u``) stay two.
+        A line run four times (x = T4(2s - 1)) turns back at ``t`` and ``u`` at once where two
+        of its runs meet, and ``u`` kept its way there: one overlap ran through two folds.
 
     Returns
     -------
@@ -326,7 +333,7 @@ def self_overlaps(pieces: Sequence[tuple[Overlap, bool]]) -> list[Overlap]:
     """
     out: list[Overlap] = []
     for o in sorted((o for o, _ in pieces), key=lambda o: o.t):
-        k = next((k for k, q in enumerate(out) if _continues(q, o)), None)
+        k = next((k for k, q in enumerate(out) if _continues(q, o) and not _turns_at(curve, q)), None)
         if k is None:
             out.append(o)
         else:
@@ -341,6 +348,16 @@ def _continues(q: Overlap, o: Overlap) -> bool:
     """
     return (abs(q.t[1] - o.t[0]) <= 1e-12 and abs(q.u[1] - o.u[0]) <= 1e-12
             and (q.u[1] > q.u[0]) == (o.u[1] > o.u[0]))
+
+
+def _turns_at(curve: RationalBezier | None, q: Overlap) -> bool:
+    """True when ``curve`` turns back at ``q``'s end, in ``t`` or ``u`` (:func:`_turns`)."""
+    return curve is not None and (_turns(curve, q.t[1]) or _turns(curve, q.u[1]))
+
+
+def _turns(c: RationalBezier, x: float) -> bool:
+    """True when ``c`` turns back at ``x`` inside its range: it leaves ``c(x)`` the way it came."""
+    return 0.0 < x < 1.0 and float(np.dot(curve_direction(c, x, -1), curve_direction(c, x, 1))) > 0.0
 
 
 def _fold(c: RationalBezier, t: float, u: float) -> float | None:
@@ -395,11 +412,12 @@ def _to_fold(c: RationalBezier, o: Overlap, tol: float) -> Overlap:
     cut back to the fold. Otherwise ``o`` is returned as it is.
     """
     (t0, t1), (u0, u1) = o.t, o.u
-    if u0 > u1 > t1:  # u runs back towards t: a retrace (never a stretch run twice the same way)
+    if u0 > u1 > t1 and not _turns(c, t1):  # u runs back towards t: a retrace (never a stretch run
+        # twice the same way); ending at a fold already, it is a stretch of its own (a line run 4 times)
         m = _fold(c, t1, u1)
         if m is not None and m > t1 and _coincide(c, c, t1, m, u1, m, tol):
             return Overlap(t=(t0, m), u=(u0, m))
-    elif u0 > u1 and u0 > t0:
+    elif u0 > u1 and u0 > t0 and t1 >= u1:
         m = _fold(c, t0, u0)
         if m is not None and t0 < m < u0 and _coincide(c, c, t0, m, u0, m, tol):
             return Overlap(t=(t0, m), u=(u0, m))
@@ -441,7 +459,7 @@ def refine_self(c: RationalBezier, items: Sequence[Result], tol: float) -> list[
     cands = (_chains(c, c, pts, ovs, tol, ends=False) if chained else []) + ovs
     # o.t == o.u: the curve against itself, not a retraced stretch
     found = [(_to_fold(c, o, tol), True) for o in cands if o.t != o.u]
-    merged = _drop_nested(self_overlaps(found))
+    merged = _drop_nested(self_overlaps(found, c))
     res: list[Result] = [p for p in pts if not _covered(p, merged)]
     res += merged
     return _by_t(res)

@@ -231,7 +231,7 @@ def _self_planar(curve: RationalBezier, tol: float, budget: int) -> Intersection
             for bx in sub.unresolved:
                 boxes.append(ParameterBox(s0 + bx.t0 * (s1 - s0), s0 + bx.t1 * (s1 - s0),
                                           r0 + bx.u0 * (r1 - r0), r0 + bx.u1 * (r1 - r0)))
-    return IntersectionList(refine_self(curve, [*items, *self_overlaps(overlaps)], tol), boxes)
+    return IntersectionList(refine_self(curve, [*items, *self_overlaps(overlaps, curve)], tol), boxes)
 
 
 def _global_overlap(r: Overlap, s0: float, s1: float, r0: float, r1: float) -> Overlap:

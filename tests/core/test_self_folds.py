@@ -244,3 +244,21 @@ def test_the_sharp_tip_of_a_near_cusp_is_no_double_point(dim: int, lift: float) 
     pts = [[0.0, 0.0], [2.0, 2.0], [0.0, 2.0 + lift], [2.0, 0.0]]
     curve = RationalBezier([p + [0.0] for p in pts] if dim == 3 else pts)
     assert list(intersect(curve)) == []
+
+
+@pytest.mark.parametrize("n", [4, 5, 6])
+def test_a_line_run_n_times_overlaps_itself_once_per_pair_of_runs(n: int) -> None:
+    """x = T_n(2s - 1) (Chebyshev) along a line: n runs over the same stretch, n (n - 1) / 2 overlaps.
+
+    Where two runs meet, the curve turns back in ``t`` and in ``u`` at once, and ``u`` keeps its
+    way there: overlaps were chained through those folds, and one ending at a fold was extended
+    to the next (3 overlaps for n = 4 and 5; found by a hunt). In the plane only: in space such a
+    line loses overlaps between its piece pairs, from n = 3 on (a known weakness).
+    """
+    dim = 2
+    s = (1 - np.cos(np.pi * (np.arange(n + 1) + 0.5) / (n + 1))) / 2
+    basis = np.array([[comb(n, i) * x**i * (1 - x) ** (n - i) for i in range(n + 1)] for x in s])
+    xs = np.linalg.solve(basis, np.cos(n * np.arccos(2 * s - 1))).tolist()
+    truth = _truth(xs, [1.0] * (n + 1))
+    assert len(truth) == n * (n - 1) // 2
+    _check(_straight(xs, [1.0] * (n + 1), 0.4636476, dim), truth)
