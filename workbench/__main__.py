@@ -8,9 +8,12 @@ Exit status: 0 everything asked for was done; 1 some items or inputs failed (the
 from __future__ import annotations
 
 import argparse
+import contextlib
 import signal
 import sys
+import tempfile
 import time
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -54,6 +57,49 @@ def _say(msg: str) -> None:
     print(msg, file=sys.stderr)
 
 
+def _int_at_least(low: int) -> Callable[[str], int]:
+    """An argparse ``type``: an integer >= ``low``, else argparse's one-line error (exit status 2)."""
+
+    def parse(text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"expected an integer >= {low}, received {text!r}") from None
+        if value < low:
+            raise argparse.ArgumentTypeError(f"expected an integer >= {low}, received {value}")
+        return value
+
+    return parse
+
+
+def _check_folder(path: str | Path, what: str) -> Path:
+    """Refuse (:class:`_Usage`) an output folder that cannot be made or written; leaves nothing behind."""
+    p = Path(path)
+    if p.exists() and not p.is_dir():
+        raise _Usage(f"{what}: expected a folder to write into, received {p}, an existing file")
+    made = [q for q in (p, *p.parents) if not q.exists()]  # what mkdir creates, deepest first
+    try:
+        p.mkdir(parents=True, exist_ok=True)
+        tempfile.TemporaryFile(dir=p).close()
+    except OSError as exc:
+        why = exc.strerror or exc
+        raise _Usage(f"{what}: expected a folder that can be written, received {p} ({why})") from None
+    finally:
+        for q in made:
+            with contextlib.suppress(OSError):
+                q.rmdir()
+    return p
+
+
+def _check_file(path: str | Path, what: str) -> Path:
+    """Refuse (:class:`_Usage`) an output file that cannot be written; leaves nothing behind."""
+    p = Path(path)
+    if p.is_dir():
+        raise _Usage(f"{what}: expected a file name, received {p}, an existing folder")
+    _check_folder(p.parent, f"{what} {p}")
+    return p
+
+
 def _cmd_corpus(args: argparse.Namespace) -> int:
     from .corpus import (
         CAD_FAMILIES,
@@ -62,31 +108,34 @@ def _cmd_corpus(args: argparse.Namespace) -> int:
         CorpusError,
         build_corpus,
         bundled_items,
+        check_families,
         write_corpus,
     )
 
     fams = args.families.split(",") if args.families else [*RANDOM_FAMILIES, *CAD_FAMILIES, *CONTACT_FAMILIES]
+    if not args.bundled:
+        check_families(fams)
+    _check_file(args.out, "OUT")
     problems: list[str] = []
     source = bundled_items() if args.bundled else build_corpus(fams, args.count, args.seed, args.step or ())
 
-    def items() -> Any:
+    def items() -> Any:  # the file is written (renamed into place) only when this ends normally
+        n = 0
         for it in source:
             if isinstance(it, CorpusError):
                 problems.append(str(it))
                 _say(f"skipped: {it}")
                 continue
+            n += 1
             yield it
+        if n == 0:
+            raise _Usage(f"no items: every input was skipped, {args.out} was not written")
 
-    try:
-        n = write_corpus(args.out, items())
-    except CorpusError as exc:
-        raise _Usage(str(exc)) from None
+    n = write_corpus(args.out, items())
     print(
         f"wrote {n} items ({', '.join(fams)}) to {args.out}"
         + (f"; {len(problems)} input(s) skipped" if problems else "")
     )
-    if n == 0:
-        raise _Usage(f"no items: every input was skipped, {args.out} is empty")
     return EXIT_FAILED if problems else EXIT_OK
 
 
@@ -176,6 +225,7 @@ def _cmd_compare(args: argparse.Namespace) -> int:
     from .run import run_compare
 
     t0 = time.perf_counter()
+    _check_folder(args.out, "--out")
     corpus, skipped = _corpus_of(args)
     info = check_corpus(corpus)
     summary = run_compare(
@@ -198,6 +248,8 @@ def _cmd_report(args: argparse.Namespace) -> int:
 
     paths = [Path(x) for x in args.results]
     out = Path(args.out) if args.out else (paths[0] if paths[0].is_dir() else paths[0].parent)
+    if args.out or out.exists():  # else the results are missing, and write_report says so
+        _check_folder(out, "--out")
     path = write_report(paths, out, corpus=args.corpus, max_pictures=args.max_pictures)
     print(f"report written to {path.resolve()}")
     return EXIT_OK
@@ -206,6 +258,7 @@ def _cmd_report(args: argparse.Namespace) -> int:
 def _cmd_bench(args: argparse.Namespace) -> int:
     from .bench import run_bench
 
+    _check_file(args.json, "--json")
     res = run_bench(args.names or ["all"], args.json)
     return EXIT_OK if all(v.get("status") == "ok" for v in res.values()) else EXIT_FAILED
 
@@ -216,14 +269,16 @@ def _cmd_quickstart(args: argparse.Namespace) -> int:
     from .run import ResultsMismatchError, open_results, read_header, run_compare
     from .versions import tool_versions
 
-    out, corpus, t0 = Path(args.out), bundled_corpus_path(), time.perf_counter()
+    out, corpus, t0 = _check_folder(args.out, "--out"), bundled_corpus_path(), time.perf_counter()
     info, results = check_corpus(corpus), out / "results.jsonl"
     fresh = args.fresh
     if not fresh and read_header(results) is not None:
         try:
-            open_results(results, info, tool_versions())
+            open_results(results, info, tool_versions(), say=_say)
             _say(f"reusing the results in {results} (same corpus, same code and tool versions)")
         except ResultsMismatchError as exc:
+            if not exc.same_corpus:  # another corpus's results: refused, as compare does
+                raise
             _say(f"{str(exc).split('; give')[0]}: running again from scratch")
             fresh = True
     print(f"comparing relief_cad with OCCT on the bundled corpus ({corpus.name}) ...")
@@ -266,21 +321,29 @@ def _add_compare(sub: Any) -> None:
         help="STEP inputs: pair edges within each file instead of across the files",
     )
     m.add_argument(
-        "--count", type=int, default=200, help="STEP inputs: edge pairs to build in all (default 200)"
+        "--count",
+        type=_int_at_least(1),
+        default=200,
+        help="STEP inputs: edge pairs to build in all (default 200)",
     )
     m.add_argument(
-        "--workers", type=int, default=None, help="worker processes (default: all cores; 1: in this process)"
+        "--workers",
+        type=_int_at_least(1),
+        default=None,
+        help="worker processes (default: all cores; 1: in this process; never more than the batches to run)",
     )
     m.add_argument(
         "--scheduler",
         default=None,
         help="Dask scheduler address, e.g. tcp://10.0.0.1:8786 (instead of local processes)",
     )
-    m.add_argument("--limit", type=int, default=None, help="only the first N items of the corpus")
+    m.add_argument(
+        "--limit", type=_int_at_least(1), default=None, help="only the first N items of the corpus"
+    )
     m.add_argument("--quiet", action="store_true", help="no progress bar")
     m.add_argument(
         "--stop-after",
-        type=int,
+        type=_int_at_least(1),
         default=None,
         metavar="N",
         help="stop after N new results, as an interruption would (exit status 3; for testing resume)",
@@ -302,8 +365,8 @@ def _add_corpus(sub: Any) -> None:
         "rational, high-degree, ill-conditioned, tangent, overlap, shared-end, near-miss, scaled, "
         "space; CAD: glyph, sketch, step, conic (conics and splines in contact)",
     )
-    c.add_argument("--count", type=int, default=20, help="items per family (default 20)")
-    c.add_argument("--seed", type=int, default=0, help="seed of the random families (default 0)")
+    c.add_argument("--count", type=_int_at_least(1), default=20, help="items per family (default 20)")
+    c.add_argument("--seed", type=_int_at_least(0), default=0, help="seed of the random families (default 0)")
     c.add_argument(
         "--step",
         action="append",
@@ -337,7 +400,9 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument(
         "--corpus", default=None, help="the corpus, for the pictures (default: as recorded by compare)"
     )
-    r.add_argument("--max-pictures", type=int, default=200, help="at most this many pictures (default 200)")
+    r.add_argument(
+        "--max-pictures", type=_int_at_least(0), default=200, help="at most this many pictures (default 200)"
+    )
     r.set_defaults(func=_cmd_report)
     b = sub.add_parser("bench", help="the benchmarks (default: all of them)")
     b.add_argument("names", nargs="*", help="planar, cad, space, arrange, families, degrees or all")
@@ -347,10 +412,13 @@ def build_parser() -> argparse.ArgumentParser:
         "quickstart",
         help="compare + report on the bundled corpus",
         description="Compare + report on the bundled corpus. Reuses the results in --out when "
-        "they were made by the same code and tools, and says so; reruns them otherwise.",
+        "they were made by the same code and tools, and says so; reruns them when other versions "
+        "made them; refuses a folder holding another corpus's results unless --fresh.",
     )
     q.add_argument("--out", default="relief_cad_report", help="output folder (default ./relief_cad_report)")
-    q.add_argument("--workers", type=int, default=None, help="worker processes (default: all cores)")
+    q.add_argument(
+        "--workers", type=_int_at_least(1), default=None, help="worker processes (default: all cores)"
+    )
     q.add_argument("--fresh", action="store_true", help="recompute even when the results could be reused")
     q.add_argument("--quiet", action="store_true", help="no progress bar")
     q.set_defaults(func=_cmd_quickstart)

@@ -18,7 +18,9 @@ import traceback
 from pathlib import Path
 from typing import Any
 
-__all__ = ["BENCHMARKS", "run_bench", "format_rows", "format_result"]
+from relief_cad.errors import ReliefCadError
+
+__all__ = ["BENCHMARKS", "BenchNameError", "check_names", "run_bench", "format_rows", "format_result"]
 
 _PKG = __package__ or "relief_cad_workbench"  # "workbench" when run from a source checkout
 BENCHMARKS = {
@@ -75,20 +77,32 @@ def format_result(res: Any) -> str:
     return "\n".join(out)
 
 
+class BenchNameError(ReliefCadError, ValueError):
+    """A benchmark name that is not in :data:`BENCHMARKS` (nor ``all``)."""
+
+
+def check_names(names: list[str]) -> None:
+    """Raise :class:`BenchNameError` naming the first unknown benchmark and the valid names."""
+    for name in names:
+        if name != "all" and name not in BENCHMARKS:
+            known = ", ".join([*BENCHMARKS, "all"])
+            raise BenchNameError(f"expected a benchmark among {known}, received {name!r}")
+
+
 def run_bench(names: list[str], out: str | Path | None = None, **kwargs: Any) -> dict[str, Any]:
-    """Run the named benchmarks (``all`` for every one); returns ``{name: result}``."""
+    """Run the named benchmarks (``all`` for every one); returns ``{name: result}``.
+
+    Raises
+    ------
+    BenchNameError
+        A name is unknown (checked before any benchmark runs or ``out`` is written).
+    """
+    check_names(names)
     if not names or "all" in names:
         names = list(BENCHMARKS)
     results: dict[str, Any] = {}
     for name in names:
-        modname = BENCHMARKS.get(name)
-        if modname is None:
-            results[name] = {
-                "status": "error",
-                "reason": f"unknown benchmark {name!r}; known: {sorted(BENCHMARKS)}",
-            }
-            print(f"== bench {name}: {results[name]['reason']}")
-            continue
+        modname = BENCHMARKS[name]
         try:
             mod = importlib.import_module(modname)
         except ImportError as exc:

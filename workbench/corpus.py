@@ -66,6 +66,7 @@ __all__ = [
     "check_corpus",
     "CorpusInfo",
     "build_corpus",
+    "check_families",
     "bundled_items",
     "pair_text",
     "PAIR_MARK",
@@ -201,21 +202,32 @@ def read_shape(text: str) -> Any:
 # --------------------------------------------------------------------------- files
 
 
-def _open(path: Path, mode: str) -> Any:
-    if str(path).endswith(".gz"):
+def _open(path: Path, mode: str, gz: bool | None = None) -> Any:
+    if str(path).endswith(".gz") if gz is None else gz:
         return gzip.open(path, mode + "t", encoding="utf-8")
     return open(path, mode, encoding="utf-8")
 
 
 def write_corpus(path: str | os.PathLike[str], items: Iterable[Item]) -> int:
-    """Write items as JSON lines (gzip when the name ends in ``.gz``); returns the count."""
+    """Write items as JSON lines (gzip when the name ends in ``.gz``); returns the count.
+
+    The lines go to a temporary file in the same folder, renamed over ``path`` only once every
+    item is written: an error or a Ctrl-C while ``items`` runs removes it, and ``path`` keeps
+    what it held.
+    """
     p = Path(path)
     p.parent.mkdir(parents=True, exist_ok=True)
+    tmp = p.with_name(f".{p.name}.{os.getpid()}.tmp")
     n = 0
-    with _open(p, "w") as f:
-        for item in items:
-            f.write(item.to_json() + "\n")
-            n += 1
+    try:
+        with _open(tmp, "w", gz=p.name.endswith(".gz")) as f:
+            for item in items:
+                f.write(item.to_json() + "\n")
+                n += 1
+        os.replace(tmp, p)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
     return n
 
 
@@ -899,5 +911,12 @@ def build_corpus(
         elif fam == "conic":
             yield from conic_family(count, seed)
         else:
-            raise CorpusError(
-                f"expected a family in {RANDOM_FAMILIES + CAD_FAMILIES + CONTACT_FAMILIES}, received {fam!r}")
+            check_families([fam])
+
+
+def check_families(families: Iterable[str]) -> None:
+    """Raise :class:`CorpusError` naming the first unknown family and the known ones."""
+    known = RANDOM_FAMILIES + CAD_FAMILIES + CONTACT_FAMILIES
+    for fam in families:
+        if fam not in known:
+            raise CorpusError(f"expected a family in {', '.join(known)}, received {fam!r}")

@@ -2,9 +2,10 @@
 
 Results go to ``<out>/results.jsonl`` (one JSON object per corpus item, written and flushed
 as soon as it is computed) and ``<out>/summary.json``. A second run on the same ``out``
-skips the items already there (a half-written last line from a crash is dropped), so an
-interrupted run continues where it stopped. Items run on all cores by default
-(``multiprocessing``), or on a Dask cluster given its scheduler address. Bad items (broken
+skips the items already there (a damaged line, e.g. half-written by a crash, is moved to
+``results.jsonl.damaged`` and its item runs again), so an interrupted run continues where it
+stopped. Items run on all cores by default (``multiprocessing``), or on a Dask cluster given its
+scheduler address. Bad items (broken
 BREP text, a corrupt corpus line, a shape with no edges, any exception) become result lines
 with ``"status": "error"`` and the reason; the run goes on.
 """
@@ -42,6 +43,8 @@ __all__ = [
     "read_header",
     "open_results",
     "ResultsMismatchError",
+    "repair_results",
+    "damaged_path",
     "InlineExecutor",
     "HEADER_KEY",
     "agreed_counts",
@@ -133,36 +136,69 @@ HEADER_KEY = "relief_cad_results"
 
 
 class ResultsMismatchError(ReliefCadError, ValueError):
-    """A results file that belongs to another corpus or to other tool versions."""
+    """A results file that belongs to another corpus or to other tool versions.
+
+    ``same_corpus`` is true when only the versions differ (the results may be recomputed there).
+    """
+
+    def __init__(self, message: str, *, same_corpus: bool = False) -> None:
+        super().__init__(message)
+        self.same_corpus = same_corpus
 
 
-def load_results(path: str | os.PathLike[str], *, repair: bool = False) -> list[dict[str, Any]]:
-    """Read a results file's records (not its header); ``repair`` drops a half-written tail line."""
-    p = Path(path)
-    if not p.exists():
-        return []
-    out: list[dict[str, Any]] = []
-    good_bytes = 0
-    data = p.read_bytes()
-    pos = 0
+def _split_lines(data: bytes) -> tuple[list[bytes], list[bytes]]:
+    """A results file's lines: the good ones (newline-ended JSON objects) and the damaged ones."""
+    good: list[bytes] = []
+    bad: list[bytes] = []
     for raw in data.splitlines(keepends=True):
         try:
             if not raw.endswith(b"\n"):
                 raise ValueError("unterminated")
-            rec = json.loads(raw)
-            if not isinstance(rec, dict):
+            if not isinstance(json.loads(raw), dict):
                 raise ValueError("not an object")
-            if HEADER_KEY not in rec:
-                out.append(rec)
-            good_bytes = pos + len(raw)
+            good.append(raw)
         except ValueError:  # also UnicodeDecodeError: a garbage line
-            if repair:
-                break
-        pos += len(raw)
-    if repair and good_bytes != len(data):
-        with open(p, "r+b") as f:
-            f.truncate(good_bytes)
-    return out
+            bad.append(raw)
+    return good, bad
+
+
+def damaged_path(path: str | os.PathLike[str]) -> Path:
+    """Where :func:`repair_results` keeps the damaged lines of ``path``: ``<name>.damaged``."""
+    p = Path(path)
+    return p.with_name(p.name + ".damaged")
+
+
+def repair_results(path: str | os.PathLike[str]) -> int:
+    """Move the damaged lines of a results file (garbage, a half-written last line) aside.
+
+    Every good record stays; the damaged lines are appended to :func:`damaged_path`, so nothing
+    is lost, and the results file is rewritten without them (via a temporary file and a rename).
+    Returns the number of lines set aside.
+    """
+    p = Path(path)
+    good, bad = _split_lines(p.read_bytes())
+    if not bad:
+        return 0
+    with open(damaged_path(p), "ab") as f:
+        f.writelines(raw if raw.endswith(b"\n") else raw + b"\n" for raw in bad)
+    tmp = p.with_name(f".{p.name}.{os.getpid()}.tmp")
+    tmp.write_bytes(b"".join(good))
+    os.replace(tmp, p)
+    return len(bad)
+
+
+def load_results(path: str | os.PathLike[str], *, repair: bool = False) -> list[dict[str, Any]]:
+    """Read a results file's records (not its header), skipping damaged lines.
+
+    ``repair`` first moves the damaged lines aside (:func:`repair_results`).
+    """
+    p = Path(path)
+    if not p.exists():
+        return []
+    if repair:
+        repair_results(p)
+    recs = (json.loads(raw) for raw in _split_lines(p.read_bytes())[0])
+    return [rec for rec in recs if HEADER_KEY not in rec]
 
 
 def read_header(path: str | os.PathLike[str]) -> dict[str, Any] | None:
@@ -201,9 +237,12 @@ def _mismatch(path: Path, head: dict[str, Any] | None, info: CorpusInfo, version
 
 
 def open_results(
-    path: Path, info: CorpusInfo, versions: dict[str, str], *, fresh: bool = False
+    path: Path, info: CorpusInfo, versions: dict[str, str], *, fresh: bool = False, say: Any = None
 ) -> list[dict[str, Any]]:
     """Start, or continue, a results file for this corpus and these versions; returns its records.
+
+    Damaged lines are moved aside (:func:`repair_results`), and ``say`` (if given) is told how
+    many and where.
 
     Raises
     ------
@@ -215,10 +254,17 @@ def open_results(
         path.unlink(missing_ok=True)
         (path.parent / "summary.json").unlink(missing_ok=True)
     if path.exists() and path.stat().st_size:
-        why = _mismatch(path, read_header(path), info, versions)
+        head = read_header(path)
+        why = _mismatch(path, head, info, versions)
         if why:
-            raise ResultsMismatchError(f"{why}; give another --out, or --fresh to replace them")
-        return load_results(path, repair=True)
+            same = head is not None and head.get("sha256") == info.sha256
+            msg = f"{why}; give another --out, or --fresh to replace them"
+            raise ResultsMismatchError(msg, same_corpus=same)
+        moved = repair_results(path)
+        if moved and say is not None:
+            where = f"{moved} damaged line(s) of {path} in {damaged_path(path)}"
+            say(f"set aside {where} (items left without a result run again)")
+        return load_results(path)
     path.write_text(json.dumps({HEADER_KEY: _header(info, versions)}) + "\n", encoding="utf-8")
     return []
 
@@ -243,15 +289,18 @@ def _ignore_sigint() -> None:
     signal.signal(signal.SIGTERM, signal.SIG_DFL)  # and terminates its workers quietly
 
 
-def _executor(workers: int | None, scheduler: Any) -> tuple[Executor, int, Any]:
-    """The executor, its in-flight window (batches) and a closer (local pool or Dask)."""
+def _executor(workers: int | None, scheduler: Any, tasks: int) -> tuple[Executor, int, Any]:
+    """The executor, its in-flight window (batches) and a closer (local pool or Dask).
+
+    A local pool has no more processes than ``tasks`` (the batches to run).
+    """
     if scheduler is not None:
         dist: Any = importlib.import_module("distributed")  # untyped library
         client = scheduler if isinstance(scheduler, dist.Client) else dist.Client(scheduler)
         own = client is not scheduler
         window = max(4, 4 * sum(client.nthreads().values()))
         return client.get_executor(pure=False), window, (client.close if own else (lambda: None))
-    n = workers or os.cpu_count() or 1
+    n = min(workers or os.cpu_count() or 1, tasks)
     if n <= 1:
         return InlineExecutor(), 1, lambda: None
     ctx = mp.get_context("fork" if sys.platform.startswith("linux") else "spawn")
@@ -342,7 +391,8 @@ def run_compare(
     info : CorpusInfo, optional
         The corpus's :func:`~workbench.corpus.check_corpus` answer, if already known.
     say : callable, optional
-        Called with a one-line message when a run resumes (``"resuming: N of M ..."``).
+        Called with a one-line message when a run resumes (``"resuming: N of M ..."``), and
+        when damaged lines of ``results.jsonl`` are set aside.
 
     Returns
     -------
@@ -363,7 +413,7 @@ def run_compare(
     outdir.mkdir(parents=True, exist_ok=True)
     results_path = outdir / "results.jsonl"
     expected = info.ids[:limit] if limit is not None else info.ids
-    done_ids = {r.get("id") for r in open_results(results_path, info, versions, fresh=fresh)}
+    done_ids = {r.get("id") for r in open_results(results_path, info, versions, fresh=fresh, say=say)}
     already = len(done_ids & set(expected))
     if already and say is not None:
         say(f"resuming: {already} of {len(expected)} items already done in {results_path}")
@@ -381,7 +431,7 @@ def run_compare(
     try:
         with open(results_path, "a", encoding="utf-8") as sink:
             write = _writer(sink, bar, stop_after)
-            ex, window, close = _executor(workers, scheduler)
+            ex, window, close = _executor(workers, scheduler, -(-len(set(expected) - done_ids) // batch))
             try:
                 _drive(ex, window, _batches(corpus, set(expected), done_ids, batch), write)
             except KeyboardInterrupt:
