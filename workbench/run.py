@@ -289,6 +289,20 @@ def _ignore_sigint() -> None:
     signal.signal(signal.SIGTERM, signal.SIG_DFL)  # and terminates its workers quietly
 
 
+class SchedulerError(ReliefCadError, ConnectionError):
+    """A Dask scheduler address that cannot be used (malformed, or nothing answers there)."""
+
+
+def _client(dist: Any, address: str) -> Any:
+    """A Dask client of the scheduler at ``address``, or :class:`SchedulerError` saying why not."""
+    try:
+        return dist.Client(address, timeout="10s")
+    except (ValueError, OSError, TimeoutError) as exc:
+        why = f"{type(exc).__name__}: {exc}"
+        raise SchedulerError(f"--scheduler: expected the address of a running Dask scheduler such as "
+                             f"tcp://10.0.0.1:8786, received {address!r} ({why})") from None
+
+
 def _executor(workers: int | None, scheduler: Any, tasks: int) -> tuple[Executor, int, Any]:
     """The executor, its in-flight window (batches) and a closer (local pool or Dask).
 
@@ -296,7 +310,7 @@ def _executor(workers: int | None, scheduler: Any, tasks: int) -> tuple[Executor
     """
     if scheduler is not None:
         dist: Any = importlib.import_module("distributed")  # untyped library
-        client = scheduler if isinstance(scheduler, dist.Client) else dist.Client(scheduler)
+        client = scheduler if isinstance(scheduler, dist.Client) else _client(dist, scheduler)
         own = client is not scheduler
         window = max(4, 4 * sum(client.nthreads().values()))
         return client.get_executor(pure=False), window, (client.close if own else (lambda: None))

@@ -227,3 +227,13 @@ def test_quickstart_refuses_a_folder_holding_another_corpus_results(small, tmp_p
     line = error_line(proc)
     assert "holds results of another corpus" in line and "small.jsonl" in line and "--fresh" in line
     assert (out / "results.jsonl").read_bytes() == before and not (out / "report.html").exists()
+
+
+@pytest.mark.parametrize("address", ["foo", "tcp://"])
+def test_a_scheduler_address_that_cannot_be_used_is_one_error_line(address, small, tmp_path):
+    """--scheduler foo was a raw ValueError traceback from Dask (found by a CLI hunt)."""
+    proc = cli("compare", small, "--out", tmp_path / "out", "--scheduler", address, "--quiet")
+    assert proc.returncode == EXIT_BAD_INPUT, proc.stdout + proc.stderr
+    line = error_line(proc)
+    assert "--scheduler: expected the address of a running Dask scheduler" in line and repr(address) in line
+    assert "Traceback" not in proc.stderr
