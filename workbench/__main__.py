@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import importlib
 import signal
 import sys
 import tempfile
@@ -426,13 +427,18 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _preload() -> None:
-    """Import relief_cad and the CAD layer (OCP) up front, where a Ctrl-C cannot cut them in half."""
+    """Import relief_cad, the CAD layer (OCP) and build123d up front, where a Ctrl-C cannot cut them in half.
+
+    build123d was imported on the first item a corpus family builds: a Ctrl-C half a second into
+    ``corpus`` came during that import (pybind11 modules of OCP), and the run ended with status 0.
+    """
     import relief_cad  # noqa: F401
 
-    try:
-        import relief_cad.cad  # noqa: F401
-    except ImportError:  # no OCP: the command that needs it says so
-        pass
+    for name in ("relief_cad.cad", "build123d"):
+        try:
+            importlib.import_module(name)
+        except ImportError:  # no OCP, or no build123d: the command that needs it says so
+            pass
 
 
 def main(argv: list[str] | None = None) -> int:
