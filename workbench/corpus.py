@@ -915,8 +915,16 @@ def build_corpus(
 
 
 def check_families(families: Iterable[str]) -> None:
-    """Raise :class:`CorpusError` naming the first unknown family and the known ones."""
+    """Raise :class:`CorpusError` naming the first unknown or repeated family (and the known ones).
+
+    A family named twice would give its items twice, under the same ids, which ``compare`` then
+    refuses item by item.
+    """
     known = RANDOM_FAMILIES + CAD_FAMILIES + CONTACT_FAMILIES
+    seen: set[str] = set()
     for fam in families:
         if fam not in known:
             raise CorpusError(f"expected a family in {', '.join(known)}, received {fam!r}")
+        if fam in seen:
+            raise CorpusError(f"expected each family once, received {fam!r} twice")
+        seen.add(fam)

@@ -40,6 +40,9 @@ def test_a_failed_corpus_keeps_the_old_file_and_leaves_no_temporary(tmp_path):
     proc = cli("corpus", out, "--families", "cubic,bogus", "--count", "3")
     assert proc.returncode == EXIT_BAD_INPUT
     assert "expected a family in cubic, rational" in error_line(proc) and "received 'bogus'" in proc.stderr
+    proc = cli("corpus", out, "--families", "cubic,near-miss,cubic", "--count", "3")  # ids twice
+    assert proc.returncode == EXIT_BAD_INPUT
+    assert "expected each family once, received 'cubic' twice" in error_line(proc)
     proc = cli("corpus", out, "--families", "step", "--count", "2", "--step", tmp_path / "nothere.step")
     assert proc.returncode == EXIT_BAD_INPUT and "no items: every input was skipped" in error_line(proc)
     assert out.read_bytes() == before and _leftovers(tmp_path) == []
