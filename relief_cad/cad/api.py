@@ -820,8 +820,6 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
     crossings: list[int] = []  # per kept point: the distinct crossings it stands for
     floor: float | None = None  # the rounding floor of both edges, found on first use
     for r in sorted((r for r in raws if r.kind != "overlap"), key=lambda r: r.distance):
-        if r.kind != "crossing" and points and _beside_crossing(r, points):
-            continue
         t, u = r.t, r.u
         if same:
             # the same point of one edge (a segment joint), or the closing point of a closed edge
@@ -854,23 +852,6 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
     # an even number of crossings within tol of each other is a touch: b crosses a and back
     return merged + [_Raw(p.ea, p.eb, p.t, p.u, p.point, "tangent", p.distance) if n % 2 == 0 and n else p
                      for p, n in zip(points, crossings, strict=True)]
-
-
-def _beside_crossing(r: _Raw, points: list[_Raw]) -> bool:
-    """True when touch ``r`` is one contact with a crossing in ``points``, found again across spans.
-
-    The crossing within 1e-3 of a span of it in both parameters (the core's rule for one contact,
-    :func:`_near_params`), ``r`` off the other edge by more than the rounding floor, and the edges
-    within ``max(4 d, floor)`` between the two (``d`` its distance). Two circles of radius 10 tol
-    into each other at their seams (a span joint of both) cross 1e-4 either side of the joint;
-    the spans' ends meet within tol there, and that touch was reported beside both crossings
-    (at tol + 5e-15, 1.0000008e-7 from each other at radius 1,000: beyond tol).
-    """
-    floor = _pair_floor(r)
-    if r.distance <= floor:
-        return False
-    lim = max(4.0 * r.distance, floor)
-    return any(p.kind == "crossing" and _near_params(p, r) and _stretch_within(p, r, lim) for p in points)
 
 
 def _join_stretches(points: list[_Raw], crossings: list[int]) -> tuple[list[_Raw], list[int]]:
@@ -929,12 +910,19 @@ def _on_flank(r: _Raw, points: list[_Raw], floor: float) -> bool:
     the edges stay close up to that contact. The core drops such points within a span pair;
     across spans, the end of the next span is one: a nearly straight spline crossing a line at a
     small angle near a knot is 4.5e-8 off the line at the knot, and the crossing was reported twice.
+
+    A touch nearer a crossing than 1e-3 is on its flank too: within one span pair the core's rule
+    of one contact would have joined them, but across a joint each span gave its own. Two circles
+    tol + 5e-15 into each other at their seams gave both crossings and a touch between them,
+    1.0000008e-7 apart (beyond tol).
     """
     if r.distance <= floor:
         return False
     lim = max(4.0 * r.distance, floor)
     reach = 1.0 if _at_joint(r.ea, r.t) or _at_joint(r.eb, r.u) else 1e-1
-    return any(p.distance < r.distance and _near_params(p, r, reach) and not _near_params(p, r)
+    touch = r.kind != "crossing"
+    return any(p.distance < r.distance and _near_params(p, r, reach)
+               and (not _near_params(p, r) or (touch and p.kind == "crossing"))
                and _stretch_within(p, r, lim) for p in points)
 
 
