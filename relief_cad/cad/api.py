@@ -1,4 +1,4 @@
-"""Intersect CAD shapes: edges in, native vertices, rich results and split edges out.
+"""Intersect CAD shapes: edges in, native vertices and rich results out.
 
 The adapters convert; they do not compute. Every edge is converted exactly to
 rational Bézier segments (:func:`relief_cad.cad.ocp.edge_segments`), segment
@@ -57,11 +57,11 @@ from ..results import Intersection, Overlap
 from ..tolerances import ModelTolerance, default_tolerance, floor_of_magnitude, rounding_floor
 from . import ocp
 from ._checks import check_model_tol, check_tol
-from .flavour import flavour_of, wrap_edge, wrap_edges, wrap_vertices
+from .flavour import flavour_of, wrap_edge, wrap_vertices
 from .results import EdgeIntersection, EdgeOverlap, EdgeResultList
 from .topology import usable_edges
 
-__all__ = ["intersect", "intersections", "planar_curves", "segments", "split"]
+__all__ = ["intersect", "intersections", "planar_curves", "segments"]
 
 _PLANE_FRACTION = 1e-3  # control points within tol * this of a plane count as coplanar
 _MEANINGFUL_FRACTION = 1e-3  # an OCCT tolerance above this fraction of the size is not used
@@ -1288,70 +1288,3 @@ def intersect(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
                 points.append(p)
     return wrap_vertices([ocp.make_vertex(p) for p in points], flavour)
 
-
-def split(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
-    """Split the edges of ``a`` where they meet ``b`` (or each other) and return the pieces.
-
-    Parameters
-    ----------
-    a : shape
-        The shape whose edges are split.
-    b : shape, optional
-        The cutting shape (its edges are not split). ``None``: ``a``'s edges are
-        split where they cross each other or themselves.
-    tol : float, optional
-        As for :func:`intersections`.
-
-    Returns
-    -------
-    list of native edges
-        In the flavour of ``a`` (a build123d ``ShapeList[Edge]``): for every edge
-        of ``a`` in :func:`~relief_cad.cad.ocp.edges_of` order, its pieces in
-        increasing parameter, on the same curve, keeping location and
-        orientation; edges that are not cut come back unchanged. Overlaps cut at
-        their ends. A cut whose point is within
-        :func:`~relief_cad.cad.ocp.shortest_piece` of the previous cut or of the
-        edge's end is not made: OCCT cannot make an edge that short.
-
-    Examples
-    --------
-    >>> from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
-    >>> from OCP.BRep import BRep_Tool
-    >>> from OCP.gp import gp_Pnt
-    >>> a = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(4, 0, 0)).Edge()
-    >>> b = BRepBuilderAPI_MakeEdge(gp_Pnt(1, -1, 0), gp_Pnt(1, 1, 0)).Edge()
-    >>> [BRep_Tool.Range_s(e) for e in split(a, b)]
-    [(0.0, 1.0), (1.0, 4.0)]
-    """
-    flavour, raws, ftol, infos = _run(a, b, tol)
-    shortest = ocp.shortest_piece(ftol)
-    cuts: dict[int, list[float]] = {}
-    for r in raws:
-        params_a = list(r.t) if r.kind == "overlap" else [r.t]
-        cuts.setdefault(r.ea.index, []).extend(params_a)
-        if b is None:
-            params_b = list(r.u) if r.kind == "overlap" else [r.u]
-            cuts.setdefault(r.eb.index, []).extend(params_b)
-    pieces: list[Any] = []
-    by_index = {e.index: e for e in infos}
-    for index, edge in enumerate(ocp.edges_of(a)):
-        info = by_index.get(index)
-        if info is None or index not in cuts:
-            pieces.append(edge)
-            continue
-        params = [info.first]
-        last_point = ocp.edge_value(edge, info.first)
-        end_point = ocp.edge_value(edge, info.last)
-        for t in sorted(cuts[index]):
-            p = ocp.edge_value(edge, t)
-            if info.first < t < info.last and math.dist(p, last_point) > shortest and math.dist(
-                p, end_point
-            ) > shortest:
-                params.append(t)
-                last_point = p
-        params.append(info.last)
-        if len(params) == 2:
-            pieces.append(edge)
-            continue
-        pieces.extend(ocp.trim_edge(edge, t0, t1) for t0, t1 in zip(params, params[1:], strict=False))
-    return wrap_edges(pieces, flavour)

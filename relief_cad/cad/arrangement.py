@@ -582,9 +582,8 @@ def split_both(a: Any, b: Any, *, tol: float | None = None) -> tuple[Any, Any]:
 def split_connected(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
     """Cut the edges of ``a`` where they meet ``b`` (or each other): ``a``'s pieces, sharing vertices.
 
-    The connected form of :func:`relief_cad.cad.api.split`: the same pieces,
-    but consecutive pieces of an edge, and pieces of different edges meeting at
-    a point, share one ``TopoDS_Vertex``.
+    Consecutive pieces of an edge, and pieces of different edges meeting at a
+    point, share one ``TopoDS_Vertex``: the pieces form connected wires.
 
     Parameters
     ----------

@@ -43,6 +43,7 @@ from tests._env import needs_cadquery
 
 arrange = arrange_module.arrange
 split_both = arrange_module.split_both
+cad_split = arrange_module.split_connected
 
 
 def raw(s):
@@ -185,7 +186,7 @@ def test_cuts_closer_than_occt_confusion_merge_instead_of_failing():
     a = line((0, 0, 0), (10, 0, 0))
     cutters = [line((5, -1, 0), (5, 1, 0)), line((5 + 5e-8, -1, 0), (5 + 5e-8, 1, 0))]
     for tol in (None, 1e-10):
-        pieces = api.split(a, cutters, tol=tol)
+        pieces = cad_split(a, cutters, tol=tol)
         assert [BRep_Tool.Range_s(e) for e in pieces] == [(0.0, 5.0), (5.0, 10.0)]
         arranged = arrange([a, *cutters], tol=tol)
         assert len(arranged) == 4  # a in two, the cutters one edge (within 1e-7 of each other) in two
@@ -204,7 +205,7 @@ def test_part_of_size_1e_6_is_cut_where_occt_can_keep_pieces_apart(kind):
     a, b = (first, other) if kind == "line" else (other, first)
     crossings = api.intersections(a, b)
     assert len(crossings) == 1
-    pieces = api.split(a, b)
+    pieces = cad_split(a, b)
     for p in pieces:
         t0, t1 = BRep_Tool.Range_s(p.wrapped)
         assert math.dist(ocp.edge_value(p, t0), ocp.edge_value(p, t1)) > 1e-7
@@ -254,7 +255,7 @@ def test_a_piece_of_a_circle_below_occt_parameter_confusion_stays_short(radius, 
     for x in (0.0, gap):
         assert_one_vertex_at(pieces, (x, radius, 0), 4, within=1e-7)
     assert_connected(pieces, tol=1e-7)
-    cut = api.split(circle, cutters)
+    cut = cad_split(circle, cutters)
     assert sorted(length(p) for p in cut)[0] == pytest.approx(gap, rel=1e-3)
     faces = arrange([circle, *cutters], faces=True)
     assert len(faces) == 1 and area(faces[0]) == pytest.approx(math.pi * radius**2, rel=1e-9)

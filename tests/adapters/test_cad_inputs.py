@@ -21,6 +21,7 @@ from OCP.Geom2d import Geom2d_Line
 from OCP.gp import gp_Dir, gp_Dir2d, gp_Lin, gp_Pln, gp_Pnt, gp_Pnt2d
 
 from relief_cad.cad import api, compare, occt_intersections
+from relief_cad.cad import split as cad_split
 from relief_cad.cad.topology import edges_of
 from relief_cad.errors import ShapeError
 
@@ -106,14 +107,14 @@ def test_edge_on_an_unbounded_line_is_refused(function):
     infinite = BRepBuilderAPI_MakeEdge(gp_Lin(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0))).Edge()
     first, last = BRep_Tool.Range_s(infinite)
     assert last - first > 1e99  # OCCT's "infinite" range: the case under test
-    fn = {**PUBLIC, "split": api.split, "intersect": api.intersect}[function]
+    fn = {**PUBLIC, "split": cad_split, "intersect": api.intersect}[function]
     with pytest.raises(ShapeError, match="bounded parameter range.*trim it"):
         fn(infinite, bd.Line((0, -1), (0, 1)))
 
 
 @pytest.mark.parametrize("function", [*PUBLIC, "split", "intersect"])
 def test_empty_build123d_compound_is_a_shape_without_edges(function):
-    fn = {**PUBLIC, "split": api.split, "intersect": api.intersect}[function]
+    fn = {**PUBLIC, "split": cad_split, "intersect": api.intersect}[function]
     for args in ((bd.Compound(), CHORD), (CHORD, bd.Compound())):
         with pytest.raises(ShapeError, match="at least one edge with a curve"):
             fn(*args)
