@@ -22,7 +22,7 @@ from typing import Any
 
 from relief_cad.errors import ReliefCadError
 
-from .corpus import Item, read_corpus
+from .corpus import Item, check_corpus, read_corpus
 from .findings import KINDS, findings, tally
 from .plots import Picture, hist_png, pair_png
 from .run import _COLS, RATIO_NOTE, agreed_counts, load_results, read_header, speed_ratio, summarize
@@ -86,9 +86,38 @@ def load_run(path: str | Path) -> Run:
     recs = load_results(rp)
     if not recs:
         raise ReportInputError(f"{rp}: no results in this file (expected lines written by compare)")
+    stray = next((i for i, r in enumerate(recs, 1) if "status" not in r or "a" in r), None)
+    if stray is not None:  # e.g. a corpus file: its items are JSON objects too
+        raise ReportInputError(
+            f"{rp}: record {stray} is not a compare result (no status, or edge data as in a corpus "
+            "file); give the folder or results.jsonl that compare wrote"
+        )
     head = read_header(rp) or {}
     label = occt_label(head.get("versions", {})) if head else rp.parent.name
     return Run(rp, head, recs, summarize(recs), label)
+
+
+def _check_same_corpus(runs: list[Run], corpus: str | Path | None) -> None:
+    """Refuse runs of different corpora side by side, or a ``corpus`` that is not theirs.
+
+    Items are matched by id, and ids repeat across corpora: another corpus's pictures or
+    columns would show other edges under the same names.
+    """
+    sha = runs[0].header.get("sha256")
+    for run in runs[1:]:
+        if run.header.get("sha256") != sha:
+            raise ReportInputError(
+                f"{run.path} holds results of corpus {run.header.get('corpus')} (sha256 "
+                f"{str(run.header.get('sha256'))[:12]}), {runs[0].path} of {runs[0].header.get('corpus')} "
+                f"(sha256 {str(sha)[:12]}): side-by-side columns need runs of the same corpus"
+            )
+    if corpus is not None and sha is not None and Path(corpus).is_file():
+        theirs = check_corpus(corpus).sha256
+        if theirs != sha:
+            raise ReportInputError(
+                f"--corpus {corpus} (sha256 {theirs[:12]}) is not the corpus of {runs[0].path} "
+                f"(sha256 {str(sha)[:12]}): its pictures would show other edges"
+            )
 
 
 def _b64(pic: Picture | None) -> str:
@@ -299,11 +328,14 @@ def write_report(
     Raises
     ------
     ReportInputError
-        A results path is missing, a folder holds no results.jsonl, or a file has no records.
+        A results path is missing, a folder holds no results.jsonl, a file has no records or
+        records that compare did not write (a corpus file), runs of different corpora are
+        given together, or ``corpus`` is not the runs' corpus.
     """
     import jinja2
 
     runs = [load_run(p) for p in ([results] if isinstance(results, (str, Path)) else results)]
+    _check_same_corpus(runs, corpus)
     corpus = corpus or runs[0].header.get("corpus")
     need = {r["id"] for run in runs for r in run.recs if r.get("disagreements")}
     items = _items(corpus, need)

@@ -107,6 +107,27 @@ def test_report_nowhere_and_an_empty_results_folder(tmp_path):
     assert not (tmp_path / "report.html").exists()
 
 
+def test_report_refuses_a_corpus_file_and_runs_or_pictures_of_another_corpus(tmp_path, small):
+    """Items are matched by id and ids repeat across corpora: another corpus would show other edges."""
+    other = tmp_path / "other.jsonl"
+    write_corpus(other, random_family("cubic", 3, seed=6))
+    proc = cli("report", other, "--out", tmp_path / "r0")
+    assert proc.returncode == EXIT_BAD_INPUT
+    assert "record 1 is not a compare result" in error_line(proc)
+    proc = cli("report", small, "--out", tmp_path / "r0")  # gzip: no line of it is a record
+    assert proc.returncode == EXIT_BAD_INPUT and "no results in this file" in error_line(proc)
+    for corpus, out in ((small, "ra"), (other, "rb")):
+        assert cli("compare", corpus, "--out", tmp_path / out, "--quiet", "--workers", "1").returncode == 0
+    proc = cli("report", tmp_path / "ra", tmp_path / "rb", "--out", tmp_path / "r1")
+    assert proc.returncode == EXIT_BAD_INPUT
+    assert "side-by-side columns need runs of the same corpus" in error_line(proc)
+    proc = cli("report", tmp_path / "ra", "--corpus", other, "--out", tmp_path / "r2")
+    assert proc.returncode == EXIT_BAD_INPUT and "is not the corpus of" in error_line(proc)
+    assert not any((tmp_path / r / "report.html").exists() for r in ("r0", "r1", "r2"))
+    assert cli("report", tmp_path / "ra", "--corpus", small, "--out", tmp_path / "r3").returncode == 0
+    assert (tmp_path / "r3" / "report.html").is_file()
+
+
 def test_corpus_names_missing_step_files_and_skips_do_not_eat_quota(tmp_path):
     out = tmp_path / "c.jsonl"
     proc = cli(
