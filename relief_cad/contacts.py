@@ -242,10 +242,20 @@ def _chains(a: RationalBezier, b: RationalBezier, pts: list[Intersection], ovs: 
                 break  # an overlap ends where either curve turns back (a line run four times)
         if cur != start:
             out.append(Overlap(t=(start[0], cur[0]), u=(start[1], cur[1])))
-            i = nodes.index(cur)  # a chain ended by a fold: the next one may start there
-        else:
+        i += 1
+        # the nodes a chain passed through (or a copy of its start) start none; its end node may (a
+        # fold), and so may one inside its t range but not its u range: b folded back over a's stretch
+        while i < len(nodes) and any(_passed(nodes[i], o) for o in out):
             i += 1
     return out
+
+
+def _passed(node: tuple[float, float], o: Overlap, slack: float = 1e-9) -> bool:
+    """True for a node on the overlap ``o`` (parameters within its ranges) other than its end node."""
+    if abs(node[0] - o.t[1]) <= slack and abs(node[1] - o.u[1]) <= slack:
+        return False
+    in_t = min(o.t) - slack <= node[0] <= max(o.t) + slack
+    return in_t and min(o.u) - slack <= node[1] <= max(o.u) + slack
 
 
 def _fold_nodes(a: RationalBezier, b: RationalBezier, tol: float) -> set[tuple[float, float]]:
@@ -280,7 +290,8 @@ def _folds(c: RationalBezier) -> list[float]:
     out = []
     for k in np.flatnonzero((d[:-1] * d[1:]).sum(axis=1) < 0.0).tolist():
         m = fold_bisect(c.homogeneous, d[k], float(s[k]), float(s[k + 1]))
-        if 0.0 < m < 1.0 and float(np.hypot.reduce(c.derivative(m))) <= _SINGULAR * size:
+        # a fold found within rounding of an end is that end (the end nodes stand for it)
+        if 1e-14 < m < 1.0 - 1e-14 and float(np.hypot.reduce(c.derivative(m))) <= _SINGULAR * size:
             out.append(m)
     return out
 

@@ -352,7 +352,10 @@ def _coincide(
         fwd[k] = uu
     if (ub - u) * direction < -1e-12:
         return False
-    # and back: b's stretch lies on a (seeded from the forward correspondence)
+    # and back: b's stretch lies on a's stretch (seeded from the forward correspondence; a foot
+    # beyond [ta, tb] is taken at its end: b may run on along a past the stretch, and fold back)
+    lo = min(ta, tb)
+    hi = max(ta, tb)
     for k in range(1, nsamp):
         s = ua + (ub - ua) * (cython.cast(cython.double, k) / nsamp)
         j = 0
@@ -360,7 +363,7 @@ def _coincide(
             j += 1
         seed = ta + (tb - ta) * (cython.cast(cython.double, j) / nsamp)
         px, py, _a, _b, _c, _d = _eval(HB, s, wb)
-        tt = _local_proj(HA, px, py, seed, wa)
+        tt = min(hi, max(lo, _local_proj(HA, px, py, seed, wa)))
         x, y, _a, _b, _c, _d = _eval(HA, tt, wa)
         if hypot(x - px, y - py) > tol:
             return False

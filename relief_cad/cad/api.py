@@ -809,7 +809,8 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
         if merged:
             prev = merged[-1]
             gap_t = r.t[0] - prev.t[1]
-            if gap_t <= ptol * max(1.0, abs(ea.last - ea.first)) and _close_params(
+            turns = (prev.u[1] - prev.u[0]) * (r.u[1] - r.u[0]) < 0.0  # b folds back: two overlaps
+            if gap_t <= ptol * max(1.0, abs(ea.last - ea.first)) and not turns and _close_params(
                 prev.u[1], r.u[0], eb, ptol
             ):
                 merged[-1] = _Raw(ea, eb, (prev.t[0], max(prev.t[1], r.t[1])), (prev.u[0], r.u[1]),
@@ -1003,11 +1004,23 @@ def _near(p: tuple[float, float, float], q: tuple[float, float, float], tol: flo
 
 
 def _inside(o: _Raw, r: _Raw, tol: float) -> bool:
-    slack = 1e-9 * max(1.0, abs(o.ea.last - o.ea.first))
-    if o.t[0] - slack <= r.t <= o.t[1] + slack:
+    """True when the point ``r`` is the overlap ``o`` (or one of its ends) again.
+
+    Both parameters must lie in the overlap's ranges: ``a`` may run on along ``b`` while ``b``
+    comes back across ``a`` elsewhere, a crossing at a ``t`` inside the overlap but ``u`` outside.
+    On one edge the pair may come either way round.
+    """
+    if _in_ranges(o, r.t, r.u) or (o.ea is o.eb and _in_ranges(o, r.u, r.t)):
         return True
     ends = [ocp.edge_value(o.ea.edge, o.t[0]), ocp.edge_value(o.ea.edge, o.t[1])]
     return any(_near(e, r.point, tol) for e in ends)
+
+
+def _in_ranges(o: _Raw, t: float, u: float) -> bool:
+    slack_t = 1e-9 * max(1.0, abs(o.ea.last - o.ea.first))
+    slack_u = 1e-9 * max(1.0, abs(o.eb.last - o.eb.first))
+    in_t = bool(min(o.t) - slack_t <= t <= max(o.t) + slack_t)
+    return in_t and bool(min(o.u) - slack_u <= u <= max(o.u) + slack_u)
 
 
 def _shared_vertex_contact(r: _Raw, tol: float) -> bool:

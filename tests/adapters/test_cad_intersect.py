@@ -992,3 +992,50 @@ def test_a_space_spline_and_a_copy_turned_by_1e_7_about_one_of_its_points_are_se
     for t in np.linspace(found[0].t[0], found[0].t[1], 9)[1:-1]:  # a stretch within tol of b
         q = ocp.edge_value(a.wrapped, float(t))
         assert GeomAPI_ProjectPointOnCurve(gp_Pnt(*q), BRep_Tool.Curve_s(b.wrapped, 0.0, 1.0)).LowerDistance() <= 1e-7
+
+
+# ----------------------------------------------------------------------------- overlaps with a fold or a return
+def _polyline_spline(pts: list[tuple[float, float]]) -> TopoDS_Edge:
+    """A degree-1 B-spline through ``pts``, parameter k at the k-th point."""
+    n = len(pts)
+    knots, mults = Array1OfReal(1, n), Array1OfInteger(1, n)
+    for k in range(n):
+        knots.SetValue(k + 1, float(k))
+        mults.SetValue(k + 1, 2 if k in (0, n - 1) else 1)
+    return BRepBuilderAPI_MakeEdge(Geom_BSplineCurve(_poles(pts), knots, mults, 1)).Edge()
+
+
+def test_a_crossing_with_t_inside_an_overlap_but_u_outside_it_is_kept():
+    """b runs along a over x in [2, 5], goes up and comes back down across a at x = 3.5 (a hunt).
+
+    The crossing's t lies inside the overlap's t range, but b is elsewhere (u = 3.5, the overlap
+    has u in [0, 1]): it was dropped as the overlap again when a came first, kept the other way round.
+    """
+    a = seg(XY, (0, 0), (10, 0))
+    b = _polyline_spline([(2, 0), (5, 0), (5, 2), (3.5, 2), (3.5, -2)])
+    for first, second in ((a, b), (b, a)):
+        got = api.intersections(first, second)
+        overlaps = [r for r in got if isinstance(r, EdgeOverlap)]
+        points = [r for r in got if isinstance(r, EdgeIntersection)]
+        assert len(overlaps) == 1 and len(points) == 1, got
+        assert points[0].kind == "crossing" and np.allclose(points[0].point, (3.5, 0, 0), atol=1e-12)
+        check_on_edges(got)
+
+
+def test_overlaps_meeting_where_b_folds_back_are_not_merged_across_the_fold():
+    """A Bézier along a line out to x = 9.2531 (its fold) and back to x = 7: two overlaps, either order.
+
+    The CAD layer merged the core's two overlaps into one, t = (2, 7) on the line, losing the
+    stretch out to the fold. Truth in closed form (x_b'(u) = 0 at the fold).
+    """
+    u_fold = (66.0 + math.sqrt(66.0**2 + 4 * 88.5 * 1.5)) / (2 * 88.5)
+    x_fold = 2 * (1 - u_fold) ** 3 + 7.5 * u_fold * (1 - u_fold) ** 2 + 42 * u_fold**2 * (1 - u_fold) + 7 * u_fold**3
+    a = seg(XY, (0, 0), (10, 0))
+    b = BRepBuilderAPI_MakeEdge(Geom_BezierCurve(_poles([(2, 0), (2.5, 0), (14, 0), (7, 0)]))).Edge()
+    want = sorted([sorted([(2.0, 0.0), (x_fold, u_fold)]), sorted([(7.0, 1.0), (x_fold, u_fold)])])
+    for first, second in ((a, b), (b, a)):
+        got = api.intersections(first, second)
+        assert all(isinstance(r, EdgeOverlap) for r in got), got
+        ends = [sorted(zip(r.t, r.u, strict=True) if first is a else zip(r.u, r.t, strict=True)) for r in got]
+        assert np.allclose(sorted(ends), want, atol=1e-9), got
+        check_on_edges(got)

@@ -262,3 +262,32 @@ def test_a_line_run_n_times_overlaps_itself_once_per_pair_of_runs(n: int) -> Non
     truth = _truth(xs, [1.0] * (n + 1))
     assert len(truth) == n * (n - 1) // 2
     _check(_straight(xs, [1.0] * (n + 1), 0.4636476, dim), truth)
+
+
+# --------------------------------------------------------------------------- a curve folding back along another
+_FOLD_U = (66.0 + math.sqrt(66.0**2 + 4 * 88.5 * 1.5)) / (2 * 88.5)  # x_b'(u) = 0: -88.5 u² + 66 u + 1.5 = 0
+
+
+def _fold_x(u: float) -> float:
+    return 2 * (1 - u) ** 3 + 7.5 * u * (1 - u) ** 2 + 42 * u**2 * (1 - u) + 7 * u**3
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_a_curve_overshooting_along_a_line_and_folding_back_gives_two_overlaps_either_way(dim: int) -> None:
+    """b runs along a from x = 2 out to x = 9.2531 (its fold), and back to x = 7 (found by a hunt).
+
+    The line a was matched end to end with b, (0.2, 0) to (0.7, 1): the check of b's stretch on a
+    took feet anywhere on a, not on its stretch. Truth in closed form: the fold is the root of
+    x_b'(u); a is covered on [0.2, x_f / 10] twice, by two overlaps meeting at the fold.
+    """
+    d = np.array([1.0, 0.5, 0.3])[:dim] if dim == 3 else np.array([1.0, 0.0])
+    o = np.array([0.2, -1.0, 0.5])[:dim] if dim == 3 else np.zeros(2)
+    a = RationalBezier([o, o + 10 * d])
+    b = RationalBezier([o + x * d for x in (2.0, 2.5, 14.0, 7.0)])
+    t_fold = _fold_x(_FOLD_U) / 10
+    want = [[(0.2, 0.0), (t_fold, _FOLD_U)], [(0.7, 1.0), (t_fold, _FOLD_U)]]  # each overlap's end nodes
+    for first, second in ((a, b), (b, a)):
+        got = intersect(first, second)
+        assert all(isinstance(r, Overlap) for r in got), got
+        ends = [sorted(zip(r.t, r.u, strict=True) if first is a else zip(r.u, r.t, strict=True)) for r in got]
+        assert np.allclose(sorted(ends), want, atol=1e-9), got
