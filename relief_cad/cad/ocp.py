@@ -37,6 +37,7 @@ approximated by OCCT (``GeomConvert_ApproxCurve``) and flagged
 
 from __future__ import annotations
 
+import bisect
 import functools
 import math
 from collections.abc import Sequence
@@ -47,7 +48,7 @@ import numpy as np
 from OCP.BRep import BRep_Builder, BRep_Tool
 from OCP.BRepAdaptor import BRepAdaptor_Curve
 from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeVertex
-from OCP.Geom import Geom_BezierCurve, Geom_TrimmedCurve
+from OCP.Geom import Geom_BezierCurve, Geom_Curve, Geom_TrimmedCurve
 from OCP.Geom2d import Geom2d_BezierCurve
 from OCP.GeomAbs import GeomAbs_Shape
 from OCP.GeomConvert import GeomConvert_ApproxCurve, GeomConvert_BSplineCurveToBezierCurve
@@ -462,29 +463,77 @@ def _bspline_segments(curve: Any, first: float, last: float, m: np.ndarray | Non
             return [Segment(h, first, last)]
         piece = _make_curve(h).segment((first - k0) / (k1 - k0), (last - k0) / (k1 - k0))
         return [Segment.from_curve(piece, first, last)]
-    periodic = curve.IsPeriodic()  # where OCCT 8.0 may leave poles unset: see _on_knot
+    knots = [curve.Knot(i) for i in range(1, curve.NbKnots() + 1)]
+    out: list[Segment] = []
+    for r0, r1, shift in _conversion_ranges(curve, knots, first, last):
+        out.extend(_knot_arcs(curve, knots, r0, r1, shift, m))
+    if not out:
+        raise OcctError(f"GeomConvert_BSplineCurveToBezierCurve gave no arc on [{first}, {last}]")
+    # the labels of the edge's own bounds, exactly (the conversion ranges may have snapped them)
+    out[0] = _segment(out[0].homogeneous, first, out[0].t1)
+    out[-1] = _segment(out[-1].homogeneous, out[-1].t0, last)
+    return out
+
+
+def _conversion_ranges(curve: Any, knots: list[float], first: float,
+                       last: float) -> list[tuple[float, float, float]]:
+    """``[first, last]`` as ranges within the knot domain: ``(r0, r1, shift)``, edge parameter = r + shift.
+
+    A periodic curve's range is moved by whole periods to start in the knot domain, and cut at
+    its seam: OCCT reduces a bound past the domain to the knot a period before (``LocateU``), and
+    then fails on ``[5, 7]`` of knots 0..6 (7 taken as 1).
+    """
+    if not curve.IsPeriodic():
+        return [(first, last, 0.0)]
+    k0, k1 = knots[0], knots[-1]
+    period = k1 - k0
+    shift = math.floor((first - k0) / period) * period
+    r0, r1 = _on_knot(curve, first - shift), last - shift
+    if r0 >= k1:  # first a rounding below a period's start: start at k0
+        r0, r1, shift = k0, r1 - period, shift + period
+    if _on_knot(curve, r1) <= k1:
+        return [(r0, min(r1, k1), shift)]
+    return [(r0, k1, shift), (k0, r1 - period, shift + period)]
+
+
+def _knot_arcs(curve: Any, knots: list[float], r0: float, r1: float, shift: float,
+               m: np.ndarray | None) -> list[Segment]:
+    """The Bézier arcs of ``curve`` over ``[r0, r1]`` (in its knot domain), labelled ``+ shift``.
+
+    OCCT converts whole knot spans only (``[r0, r1]`` widened to the knots around it), where its
+    arcs are exact; the end arcs are then cut at ``r0`` and ``r1`` here, by de Casteljau. Given a
+    bound within ``PConfusion`` of a knot, OCCT kept the whole span but took its first pole at
+    neither (a curve 14,000 long: points 3.7e-6 off the reported parameters).
+    """
+    r0, r1 = _on_knot(curve, r0), _on_knot(curve, r1)
+    if not r1 > r0:
+        return []
+    lo = knots[max(0, bisect.bisect_right(knots, r0) - 1)]
+    hi = knots[min(len(knots) - 1, bisect.bisect_left(knots, r1))]
     try:
-        conv = GeomConvert_BSplineCurveToBezierCurve(
-            curve, _on_knot(curve, first) if periodic else first, _on_knot(curve, last) if periodic else last,
-            _KNOT_TOL)
+        conv = GeomConvert_BSplineCurveToBezierCurve(curve, lo, hi, _KNOT_TOL)
     except Exception as exc:  # noqa: BLE001 - OCCT raises Standard_Failure subclasses
-        raise OcctError(f"GeomConvert_BSplineCurveToBezierCurve failed on [{first}, {last}]: {exc}") from exc
+        raise OcctError(f"GeomConvert_BSplineCurveToBezierCurve failed on [{lo}, {hi}]: {exc}") from exc
     n = conv.NbArcs()
-    knots = Array1OfReal(1, n + 1)
-    conv.Knots(knots)
-    ks = [knots.Value(i) for i in range(1, n + 2)]
+    arr = Array1OfReal(1, n + 1)
+    conv.Knots(arr)
+    ks = [arr.Value(i) for i in range(1, n + 2)]
     size = 0.0  # the largest coordinate of the curve's poles (for _check_arc)
-    if periodic:
+    if curve.IsPeriodic():
         size = max(abs(c) for i in range(1, curve.NbPoles() + 1) for c in curve.Pole(i).Coord())
     out = []
     for i in range(n):
-        if ks[i + 1] <= ks[i]:
+        a0, a1 = max(ks[i], r0), min(ks[i + 1], r1)
+        if not a1 > a0:
             continue
         arc = conv.Arc(i + 1)
-        if periodic:
+        if size:
             _check_arc(curve, arc, ks[i], ks[i + 1], size)
         h = _apply(_bezier_rows(arc), m)
-        out.append(_segment(h, first if i == 0 else ks[i], last if i == n - 1 else ks[i + 1]))
+        if (a0, a1) != (ks[i], ks[i + 1]):
+            w = ks[i + 1] - ks[i]
+            h = _make_curve(h).segment((a0 - ks[i]) / w, (a1 - ks[i]) / w).homogeneous
+        out.append(_segment(h, a0 + shift, a1 + shift))
     return out
 
 
@@ -527,7 +576,14 @@ def _check_arc(curve: Any, arc: Any, k0: float, k1: float, size: float) -> None:
 def _approx_segments(
     curve_or_adaptor: Any, first: float, last: float, m: np.ndarray | None, tol: float
 ) -> list[Segment]:
-    """Approximate any curve by a B-spline with OCCT, keeping its parameterisation."""
+    """Approximate any curve by a B-spline with OCCT over ``[first, last]``, keeping its parameterisation.
+
+    A curve is trimmed to the edge's range first: OCCT approximates a curve over its own domain,
+    so past a periodic curve's period the edge took an extrapolation (1.5e-5 off an offset circle),
+    and an offset of an unbounded line had no usable domain at all.
+    """
+    if isinstance(curve_or_adaptor, Geom_Curve):
+        curve_or_adaptor = Geom_TrimmedCurve(curve_or_adaptor, first, last)
     try:
         approx = GeomConvert_ApproxCurve(curve_or_adaptor, tol, GeomAbs_Shape.GeomAbs_C2, 1000, 14)
     except Exception as exc:  # noqa: BLE001
@@ -537,8 +593,13 @@ def _approx_segments(
             f"OCCT could not approximate this curve within {tol} (no result); it cannot be converted"
         )
     err = float(approx.MaxError())
-    segs = _bspline_segments(approx.Curve(), first, last, m)
-    return [Segment(s.homogeneous, s.t0, s.t1, approximate=True, error=err) for s in segs]
+    bs = approx.Curve()
+    shift = bs.FirstParameter() - first  # a periodic curve's trimmed range may start a period on
+    segs = _bspline_segments(bs, first + shift, last + shift, m)
+    out = [Segment(s.homogeneous, s.t0 - shift, s.t1 - shift, approximate=True, error=err) for s in segs]
+    out[0] = Segment(out[0].homogeneous, first, out[0].t1, approximate=True, error=err)
+    out[-1] = Segment(out[-1].homogeneous, out[-1].t0, last, approximate=True, error=err)
+    return out
 
 
 def edge_segments(

@@ -364,6 +364,24 @@ def test_offset_curve_is_approximated_and_flagged():
         ocp.edge_segments(edge, approximate=False)
 
 
+@pytest.mark.parametrize("basis, first, last", [("circle", 5.0, 7.0), ("circle", -1.0, 1.0), ("line", 0.0, 3.0)])
+def test_offset_curve_is_approximated_over_the_edge_range(basis, first, last):
+    """An offset of a whole circle over [5, 7] (past its period), or of an unbounded line (a hunt).
+
+    The approximation covered the basis curve's own domain: past 2π the edge took an
+    extrapolation (1.5e-5 off), and the line's offset failed as a "degenerate" segment.
+    """
+    curve = Geom_Circle(FRAMES["xy"], 1.0) if basis == "circle" else Geom_Line(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0))
+    edge = _edge(BRepBuilderAPI_MakeEdge(Geom_OffsetCurve(curve, 0.5, gp_Dir(0, 0, 1)), first, last))
+    segs = ocp.edge_segments(edge)
+    assert (segs[0].t0, segs[-1].t1) == BRep_Tool.Range_s(edge)  # OCCT keeps [-1, 1] as [2π - 1, 2π + 1]
+    adaptor = BRepAdaptor_Curve(edge)
+    for seg in segs:
+        for s in np.linspace(0.0, 1.0, 9):
+            occt = np.array(adaptor.Value(float(seg.edge_param(s))).Coord())
+            assert np.linalg.norm(occt - seg.curve.evaluate(s)) <= 1e-7
+
+
 def test_edge_without_3d_curve_is_approximated():
     # a helix from build123d lives on a cylinder: its edges carry curves on the surface
     helix = bd.Helix(pitch=1.0, height=2.0, radius=1.0)
@@ -564,3 +582,31 @@ def test_an_arc_off_its_curve_is_an_error_not_an_answer() -> None:
     ocp._check_arc(curve, conv.Arc(2), ks[1], ks[2], size)  # the right arc: no error
     with pytest.raises(OcctError, match="off the curve"):
         ocp._check_arc(curve, conv.Arc(3), ks[1], ks[2], size)  # its neighbour
+
+
+# --------------------------------------------------------------------------- bounds near knots, ranges past a period
+@pytest.mark.parametrize("offset", [8e-10, 3e-10, -3e-10, -8e-10, 0.0])
+def test_a_bound_within_pconfusion_of_a_knot_converts_exactly(offset):
+    """A cubic B-spline 14,000 long, knots 0, 0.5, 1, cut at 0.5 + offset (found by a hunt).
+
+    Given such a bound, OCCT's converter kept the whole span [0.5, 1] but started its arc at
+    neither 0.5 nor the bound: the segment was 3.7e-6 off the edge at the reported parameters.
+    """
+    poles = [(0, 0, 0), (3000, 4000, 0), (7000, -3000, 0), (10000, 2000, 0), (14000, 0, 0)]
+    curve = Geom_BSplineCurve(_poles(FRAMES["xy"], poles), _reals([0.0, 0.5, 1.0]), _ints([4, 1, 4]), 3, False)
+    # the bound on the far side of the knot from the rest of the edge (no sliver of width 8e-10,
+    # whose parameter map check_round_trip cannot check to 1e-13)
+    first, last = (0.5 + offset, 1.0) if offset >= 0 else (0.0, 0.5 + offset)
+    check_round_trip(BRepBuilderAPI_MakeEdge(curve, first, last).Edge())
+
+
+@pytest.mark.parametrize("first, last", [(-1.0, 1.0), (4.0, 7.0), (1.0, 7.0), (4.5, 7.5), (6.0, 8.5),
+                                         (-3.0, 2.999999999), (0.5, 6.5), (-7.5, -4.0)])
+def test_periodic_bspline_ranges_past_the_first_period_convert(first, last):
+    """Ranges of a periodic B-spline (knots 0..6) ending on a knot a period on: OCCT's converter
+    took 7 for 1 and failed on [5, 7]; each is a valid edge, converted exactly now."""
+    poles = [(2 * math.cos(k * math.pi / 3), 1.3 * math.sin(k * math.pi / 3) + 0.2 * k) for k in range(6)]
+    curve = Geom_BSplineCurve(_poles(FRAMES["xy"], poles), _reals([float(k) for k in range(7)]), _ints([1] * 7), 3, True)
+    edge = BRepBuilderAPI_MakeEdge(curve, first, last).Edge()
+    assert BRepCheck_Analyzer(edge).IsValid()
+    check_round_trip(edge)
