@@ -24,8 +24,8 @@ from OCP.TopLoc import TopLoc_Location
 from OCP.TopoDS import TopoDS_Edge, TopoDS_Vertex
 
 from relief_cad.cad import api, ocp
-from relief_cad.cad import split as cad_split
 from relief_cad.cad import build123d as rbd
+from relief_cad.cad import split as cad_split
 from relief_cad.cad._compat import Array1OfInteger, Array1OfPnt, Array1OfReal, ListOfShape, downcast_edge
 from relief_cad.cad.compare import compare
 from relief_cad.cad.occt import occt_intersections
