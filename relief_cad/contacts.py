@@ -46,7 +46,8 @@ from ._kernels.batch import ends_match
 from ._kernels.bezier import max_abs
 from ._kernels.certify import fold_bisect
 from ._kernels.constants import SAFE_EXPONENT as _SAFE_EXPONENT
-from ._kernels.polish import foot_newton, foot_seeds, surely_far
+from ._kernels.polish import _end_ratio, foot_newton, foot_seeds, surely_far
+from ._kernels.polish import _spread as _spread_one
 from ._types import FloatArray
 from .curves import RationalBezier, _decasteljau
 from .results import Intersection, Overlap, Result
@@ -143,12 +144,14 @@ def _coincide(a: RationalBezier, b: RationalBezier, t0: float, t1: float, u0: fl
     pa = _piece(a, t0, t1)
     pb = _piece(b, min(u0, u1), max(u0, u1))
     quick = np.array([0.25, 0.5, 0.75])
-    if _surely_far(pb, pa.evaluate(quick), tol) or _surely_far(pa, pb.evaluate(quick), tol):
+    if _surely_far(pb, pa.evaluate(_spread(pa, quick)), tol) or _surely_far(
+        pa, pb.evaluate(_spread(pb, quick)), tol
+    ):
         return False
     m = _SAMPLES_PER_DEGREE * (a.degree + b.degree) + 5
     s = (np.arange(1, m + 1) - 0.5) / m
     for src, dst in ((pa, pb), (pb, pa)):
-        pts = src.evaluate(s)
+        pts = src.evaluate(_spread(src, s))
         far = _foot(dst, pts, 0.25 * tol, each=True)[1] > tol
         # a second look, on a grid 8 times finer, at the points that seemed far: on a small loop
         # the true foot can lie between two grid points that are both farther than a false local
@@ -157,6 +160,16 @@ def _coincide(a: RationalBezier, b: RationalBezier, t0: float, t1: float, u0: fl
             return False
     span = float(np.ptp(pa.evaluate(np.linspace(0.0, 1.0, m)), axis=0).max())
     return span > 4.0 * tol
+
+
+def _spread(c: RationalBezier, s: FloatArray) -> FloatArray:
+    """Parameters of ``c`` for the samples ``s`` in [0, 1], spread along it as on its standard form.
+
+    Samples even in the parameter of a curve of unequal end weights see only one end of it (the
+    kernel's ``_spread``, whose ``λ`` comes from ``_end_ratio``).
+    """
+    lam = _end_ratio(c.homogeneous, 0.0, 1.0, np.empty_like(c.homogeneous))
+    return s if lam == 1.0 else np.array([_spread_one(float(f), lam) for f in s])
 
 
 # ---------------------------------------------------------------------------- overlaps

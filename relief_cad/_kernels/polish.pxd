@@ -11,3 +11,5 @@ cpdef double _local_dist(const double[:, :] H, double px, double py, double u, d
 cpdef double _angle_sin(const double[:, :] HA, const double[:, :] HB, double t, double u, double[:, :] wa, double[:, :] wb) noexcept nogil
 cpdef double _local_proj(const double[:, :] H, double px, double py, double u, double[:, :] wk) noexcept nogil
 cpdef bint _coincide(const double[:, :] HA, const double[:, :] HB, double ta, double ua, double tb, double ub, double tol, double[:, :] wa, double[:, :] wb, Py_ssize_t nsamp) except -1
+cpdef double _end_ratio(const double[:, :] H, double t0, double t1, double[:, :] wk) noexcept nogil
+cpdef double _spread(double f, double lam) noexcept nogil

@@ -11,7 +11,7 @@ import math
 
 import cython
 import numpy as np
-from cython.cimports.libc.math import hypot, sqrt
+from cython.cimports.libc.math import exp, hypot, log, sqrt
 
 from .bezier import _cartesian, _eval, _rounds, _segment
 from .clip import clip_range_kernel, fat_line_kernel
@@ -316,6 +316,39 @@ def _local_proj(
     return bu
 
 
+def _end_ratio(H: cython.const[cython.double][:, :], t0: cython.double, t1: cython.double,
+               wk: cython.double[:, :]) -> cython.double:
+    """``λ = (w(t1) / w(t0))^(1/n)`` of the stretch ``[t0, t1]`` of ``H`` (1.0 where undefined).
+
+    The stretch's end weights are the curve's weights there; the Möbius map of :func:`_spread`
+    with this ``λ`` gives it equal end weights (Farin's standard form).
+    """
+    n: cython.Py_ssize_t = H.shape[0] - 1
+    k: cython.Py_ssize_t = H.shape[1] - 1
+    if n < 1:
+        return 1.0
+    _rounds(H, t0, wk)
+    w0 = (1.0 - t0) * wk[0, k] + t0 * wk[1, k]
+    _rounds(H, t1, wk)
+    w1 = (1.0 - t1) * wk[0, k] + t1 * wk[1, k]
+    if not (w0 > 0.0 and w1 > 0.0):
+        return 1.0
+    lam: cython.double = exp(log(w1 / w0) / n)
+    return lam if lam > 0.0 and lam < 1e300 else 1.0
+
+
+def _spread(f: cython.double, lam: cython.double) -> cython.double:
+    """The parameter in [0, 1] of the sample ``f`` on the standard form: ``f / (f + λ (1 - f))``.
+
+    Unequal end weights crowd a stretch's points towards one end (weights 1, 1e4, 1e8 put all
+    but 1e-4 of its parameter range near one end): samples even in the parameter would see
+    only that end, and two curves 25 tol apart in the middle came out as one overlap.
+    """
+    if lam == 1.0:
+        return f
+    return f / (f + lam * (1.0 - f))
+
+
 def _coincide(
     HA: cython.const[cython.double][:, :],
     HB: cython.const[cython.double][:, :],
@@ -330,17 +363,20 @@ def _coincide(
 ):
     """True when a on ``[ta, tb]`` and b on ``[ua, ub]`` coincide (within ``tol``).
 
-    Marches along ``a`` projecting onto ``b`` (and back), requiring monotone ``u``.
+    Marches along ``a`` projecting onto ``b`` (and back), requiring monotone ``u``. The samples
+    are spread along each stretch as on its standard form (:func:`_spread`).
     """
     u = ua
     direction = 1.0 if ub > ua else -1.0
     k: cython.Py_ssize_t
     j: cython.Py_ssize_t
+    lam_a = _end_ratio(HA, ta, tb, wa)
+    lam_b = _end_ratio(HB, ua, ub, wb)
     fwd: cython.double[:] = np.empty(nsamp + 1)
     fwd[0] = ua
     fwd[nsamp] = ub
     for k in range(1, nsamp):
-        s = ta + (tb - ta) * (cython.cast(cython.double, k) / nsamp)  # true division (k, nsamp: C ints)
+        s = ta + (tb - ta) * _spread(cython.cast(cython.double, k) / nsamp, lam_a)  # k, nsamp: C ints
         px, py, _a, _b, _c, _d = _eval(HA, s, wa)
         uu = _local_proj(HB, px, py, u, wb)
         x, y, _a, _b, _c, _d = _eval(HB, uu, wb)
@@ -357,11 +393,11 @@ def _coincide(
     lo = min(ta, tb)
     hi = max(ta, tb)
     for k in range(1, nsamp):
-        s = ua + (ub - ua) * (cython.cast(cython.double, k) / nsamp)
+        s = ua + (ub - ua) * _spread(cython.cast(cython.double, k) / nsamp, lam_b)
         j = 0
         while j < nsamp - 1 and (fwd[j + 1] - s) * direction < 0.0:
             j += 1
-        seed = ta + (tb - ta) * (cython.cast(cython.double, j) / nsamp)
+        seed = ta + (tb - ta) * _spread(cython.cast(cython.double, j) / nsamp, lam_a)
         px, py, _a, _b, _c, _d = _eval(HB, s, wb)
         tt = min(hi, max(lo, _local_proj(HA, px, py, seed, wa)))
         x, y, _a, _b, _c, _d = _eval(HA, tt, wa)

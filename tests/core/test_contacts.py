@@ -271,3 +271,25 @@ def test_a_singular_end_is_decided_as_on_numpy_rows() -> None:
             answers.append(_singular_end(c, t))
     assert 1000 < sum(answers) < len(answers) - 1000  # both answers, many times
     assert not _singular_end(RationalBezier([[0.0, 0.0], [0.0, 0.0], [1.0, 1.0]]), 0.5)
+
+
+@pytest.mark.parametrize("r", [1.0, 100.0, 1e4])
+def test_curves_apart_in_the_middle_are_no_overlap_whatever_their_weights(r: float) -> None:
+    """A segment and a parabola with the same ends, weights 1, r, r² on both (found by a hunt).
+
+    Geometric weights only reparameterise the curves (a Möbius map), but they put all but 1/r of
+    the parameter range near one end: samples even in the parameter saw only that end, and a
+    parabola peaking 25 tol above the segment came out as an overlap at r = 1e4. Truth in closed
+    form: the peak is h / 2 above the segment. At 0.5 tol they do overlap.
+    """
+    tol = 1e-6
+    weights = [1.0, r, r * r]
+    a = RationalBezier([[0, 0], [5, 0], [10, 0]], weights=weights)
+    for peak, overlap in ((25 * tol, False), (1.5 * tol, False), (0.5 * tol, True)):
+        b = RationalBezier([[0, 0], [5, 2 * peak], [10, 0]], weights=weights)
+        got = intersect(a, b, tol=tol)
+        if overlap:
+            assert got == [Overlap(t=(0.0, 1.0), u=(0.0, 1.0))], got
+        else:
+            assert [(p.t, p.u) for p in got if isinstance(p, Intersection)] == [(0.0, 0.0), (1.0, 1.0)], got
+            assert not any(isinstance(p, Overlap) for p in got), got
