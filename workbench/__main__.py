@@ -260,7 +260,11 @@ def _cmd_bench(args: argparse.Namespace) -> int:
     from .bench import run_bench
 
     _check_file(args.json, "--json")
-    res = run_bench(args.names or ["all"], args.json)
+    try:
+        res = run_bench(args.names or ["all"], args.json)
+    except KeyboardInterrupt:
+        print(f"\ninterrupted; the benchmarks that finished are in {args.json}", file=sys.stderr)
+        return EXIT_INTERRUPTED
     return EXIT_OK if all(v.get("status") == "ok" for v in res.values()) else EXIT_FAILED
 
 

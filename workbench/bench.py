@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import importlib
 import json
+import os
 import time
 import traceback
 from pathlib import Path
@@ -89,8 +90,43 @@ def check_names(names: list[str]) -> None:
             raise BenchNameError(f"expected a benchmark among {known}, received {name!r}")
 
 
+def _run_one(name: str, kwargs: dict[str, Any]) -> dict[str, Any]:
+    """One benchmark's result record: ok (with its result), missing or error."""
+    modname = BENCHMARKS[name]
+    try:
+        mod = importlib.import_module(modname)
+    except ImportError as exc:
+        print(f"== bench {name}: MISSING: {modname} is not available ({exc})")
+        return {"status": "missing", "reason": f"module {modname} is missing ({exc})"}
+    t0 = time.perf_counter()
+    try:
+        res = mod.run(**kwargs) if kwargs else mod.run()
+    except Exception as exc:  # noqa: BLE001
+        print(f"== bench {name}: FAILED: {type(exc).__name__}: {exc}")
+        reason = f"{type(exc).__name__}: {exc}"
+        return {"status": "error", "reason": reason, "traceback": traceback.format_exc()}
+    print(f"== bench {name} ({time.perf_counter() - t0:.1f} s)")
+    print(format_result(res))
+    return {"status": "ok", "seconds": time.perf_counter() - t0,
+            "result": res if isinstance(res, (dict, list)) else str(res)}
+
+
+def _save(results: dict[str, Any], out: str | Path | None) -> None:
+    """Write ``results`` to ``out`` as JSON, atomically (a temporary file renamed into place)."""
+    if out is None:
+        return
+    p = Path(out)
+    p.parent.mkdir(parents=True, exist_ok=True)
+    tmp = p.with_name(f".{p.name}.{os.getpid()}.tmp")
+    tmp.write_text(json.dumps(results, indent=1, default=str))
+    os.replace(tmp, p)
+
+
 def run_bench(names: list[str], out: str | Path | None = None, **kwargs: Any) -> dict[str, Any]:
     """Run the named benchmarks (``all`` for every one); returns ``{name: result}``.
+
+    ``out`` (JSON) is rewritten after each benchmark, so a run stopped by Ctrl-C keeps the
+    finished ones, and the one it stopped is marked ``"interrupted"``.
 
     Raises
     ------
@@ -102,34 +138,13 @@ def run_bench(names: list[str], out: str | Path | None = None, **kwargs: Any) ->
         names = list(BENCHMARKS)
     results: dict[str, Any] = {}
     for name in names:
-        modname = BENCHMARKS[name]
         try:
-            mod = importlib.import_module(modname)
-        except ImportError as exc:
-            results[name] = {"status": "missing", "reason": f"module {modname} is missing ({exc})"}
-            print(f"== bench {name}: MISSING: {modname} is not available ({exc})")
-            continue
-        t0 = time.perf_counter()
-        try:
-            res = mod.run(**kwargs) if kwargs else mod.run()
-        except Exception as exc:  # noqa: BLE001
-            results[name] = {
-                "status": "error",
-                "reason": f"{type(exc).__name__}: {exc}",
-                "traceback": traceback.format_exc(),
-            }
-            print(f"== bench {name}: FAILED: {type(exc).__name__}: {exc}")
-            continue
-        results[name] = {
-            "status": "ok",
-            "seconds": time.perf_counter() - t0,
-            "result": res if isinstance(res, (dict, list)) else str(res),
-        }
-        print(f"== bench {name} ({time.perf_counter() - t0:.1f} s)")
-        print(format_result(res))
+            results[name] = _run_one(name, kwargs)
+        except KeyboardInterrupt:  # the finished benchmarks are kept, this one is marked
+            results[name] = {"status": "interrupted", "reason": "interrupted (Ctrl-C) before it finished"}
+            _save(results, out)
+            raise
+        _save(results, out)  # after each benchmark: an interrupted run keeps what it measured
     if out is not None:
-        p = Path(out)
-        p.parent.mkdir(parents=True, exist_ok=True)
-        p.write_text(json.dumps(results, indent=1, default=str))
-        print(f"benchmark results written to {p}")
+        print(f"benchmark results written to {out}")
     return results

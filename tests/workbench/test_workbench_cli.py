@@ -155,6 +155,29 @@ def test_bench_reports_a_missing_module(tmp_path, monkeypatch):
     assert json.loads((tmp_path / "b.json").read_text())["nothing"]["status"] == "missing"
 
 
+def test_bench_interrupted_keeps_the_finished_benchmarks(tmp_path, monkeypatch):
+    """Ctrl-C in the second benchmark: the first one's result is on disk, the second is marked."""
+    import sys
+    import types
+
+    from relief_cad_workbench import bench
+
+    stopped = types.ModuleType("relief_cad_workbench._bench_stopped_by_ctrl_c")
+
+    def run() -> None:
+        raise KeyboardInterrupt
+
+    stopped.run = run  # type: ignore[attr-defined]
+    monkeypatch.setitem(sys.modules, stopped.__name__, stopped)
+    monkeypatch.setitem(bench.BENCHMARKS, "nothing", "relief_cad_workbench.bench_does_not_exist")
+    monkeypatch.setitem(bench.BENCHMARKS, "stopped", stopped.__name__)
+    with pytest.raises(KeyboardInterrupt):
+        bench.run_bench(["nothing", "stopped"], tmp_path / "b.json")
+    saved = json.loads((tmp_path / "b.json").read_text())
+    assert saved["nothing"]["status"] == "missing" and saved["stopped"]["status"] == "interrupted"
+    assert not list(tmp_path.glob(".*.tmp"))
+
+
 def test_bench_cad_runs_with_or_without_cadquery():
     from relief_cad_workbench import bench_cad
 
