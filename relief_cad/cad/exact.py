@@ -2,7 +2,8 @@
 
 :class:`ExactCurve` reads OCCT's own definition of an edge's curve (poles, weights and knots
 of Bézier and B-spline curves, axis placements and radii of lines and conics, the edge
-location's matrix), each binary64 number taken exactly, and evaluates it with mpmath. It
+location's matrix), each binary64 number taken exactly, and evaluates it with mpmath (a periodic
+B-spline at any parameter: it is moved by whole periods into the knot period). It
 shares no conversion code with relief_cad's :mod:`.ocp` (only the curve-type dispatch,
 :func:`.curvetypes.curve_kind`). Curve types without exact data (offset curves, edges known
 only on surfaces) are evaluated by OCCT in binary64 and flagged ``exact=False``.
@@ -134,8 +135,9 @@ class ExactCurve:
 
             return bezier
         if kind == "bspline":
-            bs = curve
-            if bs.IsPeriodic():
+            bs, period = curve, None
+            if bs.IsPeriodic():  # the same curve over its knot period [first knot, last knot]
+                period = f(bs.FirstParameter()), f(bs.LastParameter())  # exact: not OCCT's Period()
                 bs = bs.Copy()  # OCP hands back the most derived type
                 bs.SetNotPeriodic()
             p = bs.Degree()
@@ -149,6 +151,8 @@ class ExactCurve:
             lo_i, hi_i = p, len(hom) - 1
 
             def bspline(t: Any) -> list[Any]:
+                if period is not None:
+                    t = _into_period(t, *period)
                 span = lo_i
                 for s in range(lo_i, hi_i + 1):
                     if flat[s] <= t:
@@ -243,6 +247,25 @@ class ExactCurve:
         5.0
         """
         return min(max(t, self.mp.mpf(self.first)), self.mp.mpf(self.last))
+
+
+def _into_period(t: Any, lo: Any, hi: Any) -> Any:
+    """``t`` moved by whole periods ``hi - lo`` into a periodic curve's knot period ``[lo, hi]``.
+
+    The period's ends are the first and last knots, so a periodic B-spline is evaluated at any
+    parameter, on any edge range (past the last knot, before the first, in a later period), by
+    its polynomial spans over one period. A parameter already in the period, both ends included,
+    is kept as it is. Any other one becomes ``lo + (t - lo) mod (hi - lo)``, in ``[lo, hi)``
+    before rounding; a ``t`` a rounding below a period boundary can round up to ``hi``, where the
+    last knot span's end is the curve's start point, so the value stays continuous either way.
+
+    >>> from mpmath import mpf
+    >>> [float(_into_period(mpf(t), mpf(0), mpf(6))) for t in (7.5, -1, 6, 12, -(2.0**-200))]
+    [1.5, 5.0, 6.0, 0.0, 6.0]
+    """
+    if lo <= t <= hi:
+        return t
+    return lo + (t - lo) % (hi - lo)
 
 
 def _full_period(curve: Any, first: float, last: float) -> float | None:
