@@ -2,7 +2,11 @@
 
 A point candidate is refined by Gauss-Newton on ``a(t) - b(u) = 0`` (which converges to the
 local minimum of the distance for a near miss) and judged by its true distance against
-``tol``; an overlap claim is checked by sampling the claimed range of ``a`` and finding the
+``tol``. A stationary point of the distance that is no local minimum is no contact: between two
+crossings of a thin lens (two circles or a circle and a line that cut each other ``d`` deep), the
+point of ``a`` halfway between them and the point of ``b`` opposite it, ``d`` apart, are a saddle
+of ``|a(t) - b(u)|**2``; there the refinement goes on downhill on both sides, to the crossings.
+An overlap claim is checked by sampling the claimed range of ``a`` and finding the
 closest point of ``b`` to each sample in high precision. The curves are
 :class:`~relief_cad.cad.exact.ExactCurve` objects.
 
@@ -17,9 +21,10 @@ closest point of ``b`` to each sample in high precision. The curves are
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 from ..errors import InvalidInputError
 from .exact import ARBITER_DIGITS, ExactCurve
@@ -52,6 +57,10 @@ class PointCheck:
         True when the refined distance is within the tolerance.
     exact : bool
         False when a curve had no exact data (evaluated by OCCT in binary64).
+    sides : tuple of PointCheck
+        Set when the refinement first reached a saddle of the distance, no contact (the apex of a
+        thin lens): the local minima downhill on both sides of it (the lens's two crossings),
+        ordered by ``t``. The check itself is the one of them nearest to the candidate.
     """
 
     t: float
@@ -62,6 +71,7 @@ class PointCheck:
     kind: str
     holds: bool
     exact: bool = True
+    sides: tuple[PointCheck, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -111,16 +121,61 @@ def _exact(edge: Any, cache: dict[int, ExactCurve] | None = None) -> ExactCurve:
     return ExactCurve(edge)
 
 
-def _refine(
-    ca: ExactCurve, cb: ExactCurve, t0: float, u0: float, *, same: bool = False
-) -> tuple[Any, Any, Any]:
-    """Newton on the gradient of ``|a(t) - b(u)|**2 / 2``: a local minimum of the distance.
+class _Local(NamedTuple):
+    """``|a(t) - b(u)|**2 / 2`` to second order at ``(t, u)``.
+
+    Its gradient ``g1, g2``, Gauss-Newton matrix ``a11, a12, a22`` and Hessian
+    ``[[h11, a12], [a12, h22]]`` (the curvature terms ``r . a''`` and ``-r . b''`` on its diagonal).
+    """
+
+    g1: Any
+    g2: Any
+    a11: Any
+    a12: Any
+    a22: Any
+    h11: Any
+    h22: Any
+
+
+def _local(ca: ExactCurve, cb: ExactCurve, t: Any, u: Any) -> _Local:
+    """The gradient, Gauss-Newton matrix and Hessian of ``|a(t) - b(u)|**2 / 2`` at ``(t, u)``.
+
+    >>> import build123d as bd, mpmath
+    >>> a, b = ExactCurve(bd.Line((0, 0), (2, 0))), ExactCurve(bd.Line((1, 1), (1, -1)))
+    >>> [round(float(x), 9) + 0.0 for x in _local(a, b, mpmath.mpf(0.5), mpmath.mpf(1))]
+    [-0.5, 0.0, 1.0, 0.0, 1.0, 1.0, 1.0]
+    """
+    pa, da, dda = ca.jet(t)
+    pb, db, ddb = cb.jet(u)
+    r = [pa[k] - pb[k] for k in range(3)]
+    a11 = sum(x * x for x in da)
+    a22 = sum(x * x for x in db)
+    return _Local(
+        g1=sum(da[k] * r[k] for k in range(3)),
+        g2=-sum(db[k] * r[k] for k in range(3)),
+        a11=a11,
+        a12=-sum(da[k] * db[k] for k in range(3)),
+        a22=a22,
+        h11=a11 + sum(dda[k] * r[k] for k in range(3)),
+        h22=a22 - sum(ddb[k] * r[k] for k in range(3)),
+    )
+
+
+def _d2(ca: ExactCurve, cb: ExactCurve, t: Any, u: Any) -> Any:
+    """``|a(t) - b(u)|**2``."""
+    qa, qb = ca.value(t), cb.value(u)
+    return sum((qa[k] - qb[k]) ** 2 for k in range(3))
+
+
+def _refine(ca: ExactCurve, cb: ExactCurve, t0: Any, u0: Any) -> tuple[Any, Any, Any]:
+    """Newton on the gradient of ``|a(t) - b(u)|**2 / 2``: a stationary point of the distance.
 
     The full Hessian (with the curvature terms ``r . a''``) makes near misses converge
     quadratically; where it is not positive definite the Gauss-Newton matrix is used. Each
     iteration also tries the doubled step, which restores fast convergence at tangent
     contacts (a double root), and backtracks when the distance would grow. Parameters are
-    clamped to the edges' ranges.
+    clamped to the edges' ranges. The point reached is a local minimum, or, from a start on or
+    next to a saddle (the apex of a thin lens), that saddle: :func:`_downhill` goes on from there.
     """
     mp = ca.mp
     t, u = ca.clamp(mp.mpf(t0)), cb.clamp(mp.mpf(u0))
@@ -128,24 +183,11 @@ def _refine(
     eps2 = (mp.mpf(10) ** (-(mp.dps - 8)) * size) ** 2
     rel = mp.mpf(10) ** (-(mp.dps // 2))
 
-    def d2(tt: Any, uu: Any) -> Any:
-        qa, qb = ca.value(tt), cb.value(uu)
-        return sum((qa[k] - qb[k]) ** 2 for k in range(3))
-
-    cur = d2(t, u)
+    cur = _d2(ca, cb, t, u)
     for _ in range(150):
         if cur < eps2:
             break
-        pa, da, dda = ca.jet(t)
-        pb, db, ddb = cb.jet(u)
-        r = [pa[k] - pb[k] for k in range(3)]
-        g1 = sum(da[k] * r[k] for k in range(3))
-        g2 = -sum(db[k] * r[k] for k in range(3))
-        a11 = sum(x * x for x in da)
-        a22 = sum(x * x for x in db)
-        a12 = -sum(da[k] * db[k] for k in range(3))
-        h11 = a11 + sum(dda[k] * r[k] for k in range(3))
-        h22 = a22 - sum(ddb[k] * r[k] for k in range(3))
+        g1, g2, a11, a12, a22, h11, h22 = _local(ca, cb, t, u)
         if h11 > 0 and h22 > 0 and h11 * h22 - a12 * a12 > 0:
             a11, a22 = h11, h22
         lam = (a11 + a22) * mp.mpf(10) ** (-(mp.dps - 10))
@@ -155,16 +197,16 @@ def _refine(
         dt = -((a22 + lam) * g1 - a12 * g2) / det
         du = -((a11 + lam) * g2 - a12 * g1) / det
         nt, nu = ca.clamp(t + dt), cb.clamp(u + du)
-        best: tuple[Any, Any, Any] = (d2(nt, nu), nt, nu)
+        best: tuple[Any, Any, Any] = (_d2(ca, cb, nt, nu), nt, nu)
         nt, nu = ca.clamp(t + 2 * dt), cb.clamp(u + 2 * du)
-        val = d2(nt, nu)
+        val = _d2(ca, cb, nt, nu)
         if val < best[0]:
             best = (val, nt, nu)
         step = mp.mpf(1)
         while best[0] > cur and step > mp.mpf(2) ** -40:  # backtrack
             step /= 2
             nt, nu = ca.clamp(t + step * dt), cb.clamp(u + step * du)
-            best = (d2(nt, nu), nt, nu)
+            best = (_d2(ca, cb, nt, nu), nt, nu)
         if best[0] > cur:
             break
         val, nt, nu = best
@@ -173,6 +215,98 @@ def _refine(
         if small:
             break
     return t, u, mp.sqrt(cur)
+
+
+def _into_range(c: ExactCurve, t: Any) -> Any:
+    """``t`` on edge ``c``: round the seam of a closed periodic edge, else clamped to its range.
+
+    >>> import build123d as bd, mpmath
+    >>> circle, line = ExactCurve(bd.Edge.make_circle(1.0)), ExactCurve(bd.Line((0, 0), (3, 4)))
+    >>> round(float(_into_range(circle, mpmath.mpf(-1e-3))), 12), float(_into_range(line, mpmath.mpf(-1)))
+    (6.28218530718, 0.0)
+    """
+    if c.period is None or c.first <= t <= c.last:
+        return c.clamp(t)
+    return c.first + (t - c.first) % c.period
+
+
+def _downhill_direction(ca: ExactCurve, cb: ExactCurve, t: Any, u: Any) -> tuple[Any, Any, Any] | None:
+    """The unit direction ``(dt, du)`` along which ``|a(t) - b(u)|**2 / 2`` curves down, and its curvature.
+
+    The curvature is the Hessian's negative eigenvalue; None where the Hessian is positive
+    semi-definite to ``10**(-dps/2)`` of its size (its entries are good to about ``10**-30``).
+
+    The parabola ``y = x**2`` and the line ``y = 1/4`` at the apex of their lens, ``(0, 0)`` and
+    ``(0, 1/4)``: the Hessian ``[[2, -2], [-2, 1]]`` has the eigenvalue ``3/2 - sqrt(17)/2``.
+
+    >>> import build123d as bd, mpmath
+    >>> a, b = ExactCurve(bd.Bezier((-1, 1), (0, -1), (1, 1))), ExactCurve(bd.Line((-1, 0.25), (1, 0.25)))
+    >>> with mpmath.workdps(50):  # the arbiter's precision
+    ...     dt, du, low = _downhill_direction(a, b, mpmath.mpf(0.5), 1)
+    ...     there = _downhill_direction(a, b, 0.75, 1.5)
+    >>> round(float(low), 12), round(float(1.5 - math.sqrt(17) / 2), 12), there  # at a crossing: a minimum
+    (-0.561552812809, -0.561552812809, None)
+    """
+    mp = ca.mp
+    h11, h12, h22 = (_local(ca, cb, t, u)[k] for k in (5, 3, 6))
+    half = mp.sqrt(((h11 - h22) / 2) ** 2 + h12**2)
+    low = (h11 + h22) / 2 - half
+    if low >= -(abs(h11) + abs(h22)) * mp.mpf(10) ** (-(mp.dps // 2)):
+        return None
+    # the eigenvector of ``low``: (h12, low - h11) or (low - h22, h12), the better conditioned
+    vt, vu = (h12, low - h11) if abs(low - h11) >= abs(low - h22) else (low - h22, h12)
+    norm = mp.sqrt(vt**2 + vu**2)
+    return vt / norm, vu / norm, low
+
+
+def _downhill(ca: ExactCurve, cb: ExactCurve, t: Any, u: Any, dist: Any) -> list[tuple[Any, Any, Any]]:
+    """The local minima downhill on both sides of ``(t, u)`` where the Hessian is indefinite, or ``[]``.
+
+    At the apex of a lens ``dist`` deep the distance falls as ``dist - k s**2`` along the
+    direction of negative curvature ``low`` (``|a - b|**2 / 2`` as ``dist**2 / 2 + low s**2 / 2``),
+    to 0 at ``s = sqrt(2) dist / sqrt(-low)``. Each side is refined from there, or, where that
+    does not end below ``dist``, from the first point at half, a quarter... of that step whose
+    distance is below ``dist``. Empty at a local minimum or a root.
+    """
+    mp = ca.mp
+    if dist <= mp.mpf(10) ** (-(mp.dps - 8)) * max(ca.size, cb.size):
+        return []
+    way = _downhill_direction(ca, cb, t, u)
+    if way is None:
+        return []
+    vt, vu, low = way
+    found: list[tuple[Any, Any, Any]] = []
+    for sign in (-1, 1):
+        s = mp.sqrt(2) * dist / mp.sqrt(-low)
+        for k in range(80):
+            nt, nu = _into_range(ca, t + sign * s * vt), _into_range(cb, u + sign * s * vu)
+            if k == 0 or _d2(ca, cb, nt, nu) < dist**2:
+                side = _refine(ca, cb, nt, nu)
+                if side[2] < dist:
+                    found.append(side)
+                    break
+                if k:
+                    break
+            s /= 2
+    return found
+
+
+def _minima(ca: ExactCurve, cb: ExactCurve, t: Any, u: Any, tol: float) -> list[PointCheck]:
+    """The checks of the local minima of the distance the refinement reaches from ``(t, u)``.
+
+    One, or, from a saddle (:func:`_downhill`), those on both sides of it (one at a curve's end),
+    each with ``sides`` set to all of them.
+    """
+    rt, ru, dist = _refine(ca, cb, t, u)
+    sides: list[PointCheck] = []
+    for st, su, sd in _downhill(ca, cb, rt, ru, dist):
+        check = _point_check(ca, cb, st, su, sd, tol)
+        if not any(abs(check.t - c.t) <= 1e-9 * (1 + abs(c.t)) for c in sides):
+            sides.append(check)
+    if not sides:
+        return [_point_check(ca, cb, rt, ru, dist, tol)]
+    sides.sort(key=lambda c: c.t)
+    return [dataclasses.replace(c, sides=tuple(sides)) for c in sides]
 
 
 def _point_check(ca: ExactCurve, cb: ExactCurve, t: Any, u: Any, dist: Any, tol: float) -> PointCheck:
@@ -209,7 +343,11 @@ def arbitrate_point(
     Returns
     -------
     PointCheck
-        The refined parameters, true distance, tangent sine and verdict.
+        The refined parameters, true distance, tangent sine and verdict. The refinement ends at a
+        local minimum of the distance: from a saddle (a stationary point that is no minimum, as
+        at the apex of a thin lens between two crossings, of any depth) it goes on downhill on
+        both sides; the check is then the point reached nearest to the candidate (holding ones
+        first), with all of them in ``sides``.
 
     Examples
     --------
@@ -220,13 +358,38 @@ def arbitrate_point(
     >>> c = arbitrate_point(a, b, 0.5, 0.0, tol=1e-7)
     >>> c.holds, c.kind, round(c.distance, 12)
     (False, 'miss', 0.001)
+
+    A circle of radius 1 and the line ``x = 3/4`` cross at ``(3/4, +-sqrt(7)/4)``. The candidate at
+    the apex of their lens, the circle's point ``(1, 0)`` and the line's ``(3/4, 0)``, is a saddle
+    of the distance, no contact (it was judged a miss, 1/4 away): the check is the crossing
+    nearest to it (a tie here: the first in ``t``), and ``sides`` holds both.
+
+    >>> import build123d as bd
+    >>> c = arbitrate_point(bd.Edge.make_circle(1.0), bd.Line((0.75, -1), (0.75, 1)), 0.0, 1.0, tol=1e-7)
+    >>> c.kind, c.distance < 1e-40, [tuple(round(x, 12) + 0.0 for x in s.point[:2]) for s in c.sides]
+    ('crossing', True, [(0.75, 0.661437827766), (0.75, -0.661437827766)])
+    >>> round(math.sqrt(7) / 4, 12)
+    0.661437827766
     """
     import mpmath
 
     with mpmath.workdps(digits):
         ca, cb = _exact(a), _exact(b)
-        rt, ru, dist = _refine(ca, cb, t, u)
-        return _point_check(ca, cb, rt, ru, dist, tol)
+        checks = _minima(ca, cb, t, u, tol)
+        if len(checks) == 1:
+            return checks[0]
+        start = [float((p + q) / 2) for p, q in zip(ca.value(t), cb.value(u), strict=True)]
+        return min(checks, key=lambda c: (not c.holds, math.dist(c.point, start)))
+
+
+def _minima_near(ca: ExactCurve, cb: ExactCurve, t: Any, u: Any, tol: float) -> list[PointCheck]:
+    """:func:`_minima` from a sample ``(t, u)`` of an overlap claim, each point's parameters next to it.
+
+    On a closed edge a point has its parameter at either end of the range; a lens round the seam
+    has one crossing next to each end, and both are next to a sample at the seam.
+    """
+    return [dataclasses.replace(c, t=ca.near(c.t, float(t)), u=cb.near(c.u, float(u)))
+            for c in _minima(ca, cb, t, u, tol)]
 
 
 def _closest_u(ca: ExactCurve, cb: ExactCurve, t: Any, u0: Any) -> tuple[Any, Any]:
@@ -393,12 +556,11 @@ def arbitrate_overlap(
         ]
         # the deepest few (a flat, noisy distance profile has many shallow ones)
         for i in sorted(minima, key=lambda j: dists[j])[:6]:
-            rt, ru, dist = _refine(ca, cb, ts[i], us[i])
-            check = _point_check(ca, cb, rt, ru, dist, tol)
-            if ca is cb and _one_point_of(ca, check.t, check.u, tol):
-                continue  # one edge at one point (one parameter, or its closing point): no double point
-            if check.holds and not any(abs(check.t - f.t) <= 1e-9 * (1 + abs(f.t)) for f in found):
-                found.append(check)
+            for check in _minima_near(ca, cb, ts[i], us[i], tol):
+                if ca is cb and _one_point_of(ca, check.t, check.u, tol):
+                    continue  # one edge at one point (one parameter, or its closing point): no double point
+                if check.holds and not any(abs(check.t - f.t) <= 1e-9 * (1 + abs(f.t)) for f in found):
+                    found.append(check)
         if dmax <= tol:
             dmin = min(f.distance for f in found) if found else float(min(dists))
             deep = dmin * 10 < dmax and (dmin <= rounding or dmin * 1e3 < tol)
