@@ -806,16 +806,11 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
         if same and _in_one_stall(ea, min(t0, u0, u1), max(t1, u0, u1), tol):
             continue  # the edge standing still within tol: no overlap with itself (_stalls)
         r = _Raw(ea, eb, (t0, t1), (u0, u1), r.point, "overlap", 0.0)
-        if merged:
+        if merged and _continues(merged[-1], r, tol, ptol):
             prev = merged[-1]
-            gap_t = r.t[0] - prev.t[1]
-            turns = (prev.u[1] - prev.u[0]) * (r.u[1] - r.u[0]) < 0.0  # b folds back: two overlaps
-            if gap_t <= ptol * max(1.0, abs(ea.last - ea.first)) and not turns and _close_params(
-                prev.u[1], r.u[0], eb, ptol
-            ):
-                merged[-1] = _Raw(ea, eb, (prev.t[0], max(prev.t[1], r.t[1])), (prev.u[0], r.u[1]),
-                                  prev.point, "overlap", 0.0)
-                continue
+            merged[-1] = _Raw(ea, eb, (prev.t[0], max(prev.t[1], r.t[1])), (prev.u[0], r.u[1]),
+                              prev.point, "overlap", 0.0)
+            continue
         merged.append(r)
     points: list[_Raw] = []
     crossings: list[int] = []  # per kept point: the distinct crossings it stands for
@@ -853,6 +848,24 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
     # an even number of crossings within tol of each other is a touch: b crosses a and back
     return merged + [_Raw(p.ea, p.eb, p.t, p.u, p.point, "tangent", p.distance) if n % 2 == 0 and n else p
                      for p, n in zip(points, crossings, strict=True)]
+
+
+def _continues(prev: _Raw, r: _Raw, tol: float, ptol: float) -> bool:
+    """True when the overlap ``r`` (later in ``t``) continues ``prev``: one overlap, cut at a span joint.
+
+    They meet on both edges, in parameter (within ``ptol`` of the ranges) or in space (within
+    ``tol``: a space pair's overlap ends are good to about 1e-9 rad), and ``b`` runs on the same
+    way (where it turns back they are two overlaps).
+    """
+    ea, eb = prev.ea, prev.eb
+    if (prev.u[1] - prev.u[0]) * (r.u[1] - r.u[0]) < 0.0:
+        return False
+    if r.t[0] - prev.t[1] <= ptol * max(1.0, abs(ea.last - ea.first)) and _close_params(
+        prev.u[1], r.u[0], eb, ptol
+    ):
+        return True
+    return _near(ocp.edge_value(ea.edge, prev.t[1]), ocp.edge_value(ea.edge, r.t[0]), tol) and _near(
+        ocp.edge_value(eb.edge, prev.u[1]), ocp.edge_value(eb.edge, r.u[0]), tol)
 
 
 def _join_stretches(points: list[_Raw], crossings: list[int]) -> tuple[list[_Raw], list[int]]:

@@ -1039,3 +1039,21 @@ def test_overlaps_meeting_where_b_folds_back_are_not_merged_across_the_fold():
         ends = [sorted(zip(r.t, r.u, strict=True) if first is a else zip(r.u, r.t, strict=True)) for r in got]
         assert np.allclose(sorted(ends), want, atol=1e-9), got
         check_on_edges(got)
+
+
+@pytest.mark.parametrize("dz", [0.0, 3e-8, 9e-8])
+def test_an_arc_lifted_within_tol_off_its_circle_is_one_overlap_either_way(dz):
+    """A circle of radius 5 and its own 20°-100° arc moved dz along z (found by a hunt).
+
+    Lifted, the pair goes the space way, whose overlap ends are good to about 1e-9 rad: the two
+    overlaps meeting at the circle's span joint (π/2) were not joined, one way round, and
+    arrange cut the circle there too. Truth: the arc is dz from the circle all along (< tol).
+    """
+    circle = bd.Edge.make_circle(5)
+    arc = bd.Edge.make_circle(5, start_angle=20, end_angle=100).moved(bd.Location((0, 0, dz)))
+    for a, b in ((circle, arc), (arc, circle)):
+        got = api.intersections(a, b, tol=1e-7)
+        assert len(got) == 1 and isinstance(got[0], EdgeOverlap), got
+        on_circle = got[0].t if a is circle else got[0].u
+        assert np.allclose(sorted(on_circle), np.radians([20, 100]), atol=1e-8)
+    assert len(rbd.arrange([circle, arc], tol=1e-7)) == 3  # the circle cut at the arc's ends, the arc shared
