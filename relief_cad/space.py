@@ -505,9 +505,29 @@ def space_pair(a: RationalBezier, b: RationalBezier, tol: float | None, budget: 
 
 def _finished(items: list[Result], boxes: list[ParameterBox], tol: float,
               on_budget: OnBudget) -> IntersectionList:
-    """The results sorted by ``t`` (an overlap by its first ``t``), then :func:`relief_cad.results.finish`."""
+    """The results sorted by ``t`` (an overlap by its first ``t``), then :func:`relief_cad.results.finish`.
+
+    A point's parameter within :data:`_AT_END` of a curve's end is that end, exactly, as the
+    documentation of :func:`relief_cad.intersect` says of end point contacts (a T-junction in
+    space came out at ``u = 7.5e-16``: the polish moved it off the end by rounding).
+    """
+    items = [Intersection(_at_end(r.t), _at_end(r.u), r.point, r.kind, r.distance)
+             if isinstance(r, Intersection) and (_at_end(r.t) != r.t or _at_end(r.u) != r.u) else r
+             for r in items]
     items.sort(key=lambda r: r.t if isinstance(r, Intersection) else r.t[0])
     return finish(IntersectionList(items, boxes, tol), on_budget)
+
+
+_AT_END = 8.0 * 2.0**-52  # a parameter this close to 0 or 1 is the end: the point moves by a rounding
+
+
+def _at_end(x: float) -> float:
+    """``x``, or the end ``0.0`` / ``1.0`` within :data:`_AT_END` of it."""
+    if 0.0 < x <= _AT_END:
+        return 0.0
+    if 1.0 - _AT_END <= x < 1.0:
+        return 1.0
+    return x
 
 
 def _deprecated_span(k: object) -> None:

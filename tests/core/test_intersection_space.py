@@ -392,3 +392,27 @@ def test_public_intersect_forwards_on_budget_to_the_space_path() -> None:
     partial = intersect(a, b, budget=1, on_budget="return")
     assert not partial.complete
     assert len(intersect(a, b)) == 1
+
+
+def test_an_end_point_contact_in_space_has_its_end_parameter_exactly() -> None:
+    """A line's end on a degree-5 rational curve in space, a T-junction 1.8e-15 off (a hunt).
+
+    The contact came out at ``u = 7.5e-16`` (and ``6.1e-16`` swapped), where the documentation of
+    ``intersect`` says end point contacts have ``t``/``u`` exactly 0.0 or 1.0.
+    """
+    a = RationalBezier(
+        [[4.873451855244321, -9.518026563068497, 14.929081273409023],
+         [-4.798824471806243, 1.2101221898532137, 2.670699169609954],
+         [-8.128164856292084, -10.834582804626454, 12.434717003414264],
+         [0.7602776022389622, 10.035152943924516, 24.543447635481552],
+         [-6.869756769496002, 0.9037258211890074, 1.7637590159555674],
+         [-16.120828697415185, -7.9151075161370805, 20.376087003367743]],
+        [1.6974764580168227, 2.5256472461455544, 2.6714872000651972, 3.504618324304794,
+         2.9758282135497294, 4.01918052934404])
+    b = RationalBezier([[-5.039409409555223, 1.2374655038376177, 14.682793292826998],
+                        [-0.6108178161033901, -0.4573353370881814, -10.336569705505854]],
+                       [4.553185733302792, 1.8273739663222324])
+    (hit,) = intersect(a, b)
+    (back,) = intersect(b, a)
+    assert hit.u == 0.0 and back.t == 0.0
+    assert hit.t == pytest.approx(0.6147648065779625, abs=1e-12) and back.u == pytest.approx(hit.t, abs=1e-12)
