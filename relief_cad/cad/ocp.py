@@ -488,10 +488,10 @@ def _conversion_ranges(curve: Any, knots: list[float], first: float,
     k0, k1 = knots[0], knots[-1]
     period = k1 - k0
     shift = math.floor((first - k0) / period) * period
-    r0, r1 = _on_knot(curve, first - shift), last - shift
+    r0, r1 = _on_knot(knots, first - shift), last - shift
     if r0 >= k1:  # first a rounding below a period's start: start at k0
         r0, r1, shift = k0, r1 - period, shift + period
-    if _on_knot(curve, r1) <= k1:
+    if _on_knot(knots, r1) <= k1:
         return [(r0, min(r1, k1), shift)]
     return [(r0, k1, shift), (k0, r1 - period, shift + period)]
 
@@ -505,7 +505,7 @@ def _knot_arcs(curve: Any, knots: list[float], r0: float, r1: float, shift: floa
     bound within ``PConfusion`` of a knot, OCCT kept the whole span but took its first pole at
     neither (a curve 14,000 long: points 3.7e-6 off the reported parameters).
     """
-    r0, r1 = _on_knot(curve, r0), _on_knot(curve, r1)
+    r0, r1 = _on_knot(knots, r0), _on_knot(knots, r1)
     if not r1 > r0:
         return []
     lo = knots[max(0, bisect.bisect_right(knots, r0) - 1)]
@@ -541,18 +541,17 @@ _KNOT_TOL = 1e-12  # the parametric tolerance given to GeomConvert_BSplineCurveT
 _KNOT_RTOL = 1e-14  # a bound this close to a knot, relative to it, is on it (BREP text keeps 15 digits)
 
 
-def _on_knot(curve: Any, x: float) -> float:
-    """``x``, or the knot of ``curve`` within :data:`_KNOT_TOL` of it, or :data:`_KNOT_RTOL` of the knot.
+def _on_knot(knots: Sequence[float], x: float) -> float:
+    """``x``, or the knot in ``knots`` (increasing) within :data:`_KNOT_TOL` (or :data:`_KNOT_RTOL` of it).
 
-    OCCT 8.0's ``GeomConvert_BSplineCurveToBezierCurve`` returns arcs whose poles are
-    uninitialised memory when a bound lies a few ulps off a knot of a periodic curve (an edge
-    range read back from a BREP file, 3e-19 below the last knot, or 4.3e-12 above the last knot
-    at 1646: BREP text keeps 15 digits): the bound is put on the knot.
-    Periodic curves only (and :func:`_check_arc` on their arcs): the failure was seen on them,
-    and the two checks would add a third to the conversion of a glyph's 10,000 spline pieces.
+    A bound a few ulps off a knot (an edge range read back from a BREP file, 3e-19 below the last
+    knot, or 4.3e-12 above the last knot at 1646: BREP text keeps 15 digits) is put on the knot,
+    so that no arc a rounding long is cut off the span beside it. (OCCT 8.0's converter, given
+    such a bound on a periodic curve, returned arcs of uninitialised poles; it is now given knots
+    only, and :func:`_check_arc` still guards the arcs of periodic curves.)
     """
-    for i in range(1, curve.NbKnots() + 1):
-        k = curve.Knot(i)
+    i = bisect.bisect_left(knots, x)
+    for k in knots[max(0, i - 1): i + 1]:
         if abs(x - k) <= max(_KNOT_TOL, _KNOT_RTOL * abs(k)):
             return float(k)
     return x

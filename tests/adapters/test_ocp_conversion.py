@@ -528,8 +528,8 @@ def test_bspline_bound_a_few_ulps_off_a_knot_is_converted_on_the_curve() -> None
     curve = _periodic_spline()
     last = 0.000530518829238463  # the BREP file's rounding of the last knot
     assert 0.0 < _PERIODIC_KNOTS[-1] - last < 1e-18
-    assert ocp._on_knot(curve, last) == _PERIODIC_KNOTS[-1]
-    assert ocp._on_knot(curve, 0.5 * last) == 0.5 * last  # far from every knot: unchanged
+    assert ocp._on_knot(_PERIODIC_KNOTS, last) == _PERIODIC_KNOTS[-1]
+    assert ocp._on_knot(_PERIODIC_KNOTS, 0.5 * last) == 0.5 * last  # far from every knot: unchanged
     edge = BRepBuilderAPI_MakeEdge(curve, 0.0, last).Edge()
     adaptor = BRepAdaptor_Curve(edge)
     for _ in range(50):
