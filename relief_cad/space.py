@@ -511,14 +511,20 @@ def _finished(items: list[Result], boxes: list[ParameterBox], tol: float,
     documentation of :func:`relief_cad.intersect` says of end point contacts (a T-junction in
     space came out at ``u = 7.5e-16``: the polish moved it off the end by rounding).
     """
-    items = [Intersection(_at_end(r.t), _at_end(r.u), r.point, r.kind, r.distance)
-             if isinstance(r, Intersection) and (_at_end(r.t) != r.t or _at_end(r.u) != r.u) else r
-             for r in items]
+    items = [_ends_exact(r) for r in items]
     items.sort(key=lambda r: r.t if isinstance(r, Intersection) else r.t[0])
     return finish(IntersectionList(items, boxes, tol), on_budget)
 
 
 _AT_END = 8.0 * 2.0**-52  # a parameter this close to 0 or 1 is the end: the point moves by a rounding
+
+
+def _ends_exact(r: Result) -> Result:
+    """``r``, or the point ``r`` with a parameter within :data:`_AT_END` of an end put on it."""
+    if not isinstance(r, Intersection):
+        return r
+    t, u = _at_end(r.t), _at_end(r.u)
+    return r if (t, u) == (r.t, r.u) else Intersection(t, u, r.point, r.kind, r.distance)
 
 
 def _at_end(x: float) -> float:
