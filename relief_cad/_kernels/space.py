@@ -1154,16 +1154,20 @@ def _space_pair(
                 ckind = _C_CROSSING
             # merge repeated finds of one contact (tangent finds agree only to ~sqrt(eps), and a
             # touch's finds polished from far-apart planar rows spread over 3e-6): tangent finds
-            # within 1e-3 with the curves within tol all along between them (the planar rule)
+            # within 1e-3 with the curves within tol all along between them (the planar rule);
+            # other finds within 1e-10, or within 1e-6 with no gap above `meet` between them (a
+            # crossing at 1e-6 rad is found twice 1e-10 apart, both at 1e-15 from the other curve)
             dup = -1
             for q in range(nout):
                 if ov[q, 0] == _C_CROSSING or ov[q, 0] == _C_TANGENT:
-                    near = 1e-10
+                    near = 1e-6
+                    reach = meet
                     if ckind == _C_TANGENT and ov[q, 0] == _C_TANGENT:
                         near = 1e-3
+                        reach = tol
                     if abs(ov[q, 1] - t) <= near and abs(ov[q, 2] - u) <= near and (
-                            near < 1e-3
-                            or _space_overlap_real(HA, HB, ov[q, 1], ov[q, 2], t, u, tol, wka, wkb, vec)):
+                            (abs(ov[q, 1] - t) <= 1e-10 and abs(ov[q, 2] - u) <= 1e-10)
+                            or _space_overlap_real(HA, HB, ov[q, 1], ov[q, 2], t, u, reach, wka, wkb, vec)):
                         dup = q
             _space_dist2(HA, HB, t, u, wka, wkb, pa, da, pb, db)
             if dup >= 0:

@@ -416,3 +416,40 @@ def test_an_end_point_contact_in_space_has_its_end_parameter_exactly() -> None:
     (back,) = intersect(b, a)
     assert hit.u == 0.0 and back.t == 0.0
     assert hit.t == pytest.approx(0.6147648065779625, abs=1e-12) and back.u == pytest.approx(hit.t, abs=1e-12)
+
+
+SHALLOW_A = ([[0.5565896092577248, -13.682864208178732, 10.376982028002251],
+              [1.9432288577906958, -11.029078829842012, 3.6140230834075937],
+              [4.330821069314403, 18.65730609338056, -8.602581155350567],
+              [8.611261288591832, -0.8875591413070163, 6.2328212717157445]],
+             [0.9893199506900721, 0.5045334674845968, 0.8824393911673138, 1.290154309823515])
+
+
+@pytest.mark.parametrize("angle", [3e-5, 1e-5, 3e-6, 1e-6, 3e-7])
+@pytest.mark.parametrize("seed", range(6))
+def test_a_shallow_crossing_in_space_is_reported_once(angle: float, seed: int) -> None:
+    """A line through a point of a rational space cubic at a tiny angle to it: one crossing.
+
+    At 1e-6 rad the crossing was found twice, 1.1e-10 apart in ``t`` and both 1e-15 from the other
+    curve (the merge wanted 1e-10 in both parameters). The line is made through ``a(t0)``, turned
+    from the tangent by ``angle`` towards the binormal: it stays in the rectifying plane, which
+    the curve leaves along its normal at once, so the truth is ``t0`` alone (to about
+    ``eps / angle``) at the point ``a(t0)``. (Turned towards the normal, the line meets the curve
+    again ``2 angle / curvature`` along.)
+    """
+    rng = np.random.default_rng(seed)
+    a = RationalBezier(*SHALLOW_A)
+    t0 = 0.7250085964727272 if seed == 0 else float(rng.uniform(0.2, 0.8))
+    p, d = a.evaluate(np.array([t0]))[0], a.derivative(np.array([t0]))[0]
+    dd = a.derivative(np.array([t0 + 1e-4]))[0] - a.derivative(np.array([t0 - 1e-4]))[0]  # along a''
+    d /= np.linalg.norm(d)
+    n = np.cross(d, dd) * rng.choice([-1.0, 1.0])  # the binormal, either way
+    n /= np.linalg.norm(n)
+    e = math.cos(angle) * d + math.sin(angle) * n
+    s0, s1 = rng.uniform(4.0, 12.0, 2)
+    b = RationalBezier([p - s0 * e, p + s1 * e])
+    res = [r for r in intersect(a, b) if isinstance(r, Intersection)]
+    assert len(res) == 1, res
+    (r,) = res
+    assert abs(r.t - t0) < 1e-13 / angle and abs(r.u - s0 / (s0 + s1)) < 1e-13 / angle
+    assert np.linalg.norm(np.asarray(r.point) - p) <= intersect(a, b).tol_used
