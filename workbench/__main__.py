@@ -269,12 +269,21 @@ def _cmd_bench(args: argparse.Namespace) -> int:
 
 
 def _cmd_quickstart(args: argparse.Namespace) -> int:
+    from .run import results_lock
+
+    out = _check_folder(args.out, "--out")
+    out.mkdir(parents=True, exist_ok=True)
+    with results_lock(out):  # from the reuse check to the report
+        return _quickstart_in(out, args)
+
+
+def _quickstart_in(out: Path, args: argparse.Namespace) -> int:
     from .corpus import bundled_corpus_path, check_corpus
     from .report import write_report
     from .run import ResultsMismatchError, open_results, read_header, run_compare
     from .versions import tool_versions
 
-    out, corpus, t0 = _check_folder(args.out, "--out"), bundled_corpus_path(), time.perf_counter()
+    corpus, t0 = bundled_corpus_path(), time.perf_counter()
     info, results = check_corpus(corpus), out / "results.jsonl"
     fresh = args.fresh
     if not fresh and read_header(results) is not None:

@@ -23,6 +23,7 @@ import traceback
 from collections import defaultdict
 from collections.abc import Iterable, Iterator
 from concurrent.futures import FIRST_COMPLETED, Executor, Future, ProcessPoolExecutor, wait
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, TextIO
 
@@ -43,6 +44,8 @@ __all__ = [
     "read_header",
     "open_results",
     "ResultsMismatchError",
+    "ResultsBusyError",
+    "results_lock",
     "repair_results",
     "damaged_path",
     "InlineExecutor",
@@ -269,6 +272,61 @@ def open_results(
     return []
 
 
+class ResultsBusyError(ReliefCadError, BlockingIOError):
+    """A results folder that another run is writing to at this moment."""
+
+
+@contextmanager
+def results_lock(folder: Path) -> Iterator[None]:
+    """Hold ``folder`` for one run: a second run on it is refused, not interleaved with this one.
+
+    An exclusive ``flock`` on the folder itself (nothing is left behind in it); it ends with the
+    process, whatever way the process ends. A process holding it may enter again (quickstart holds
+    the folder around its compare). Where ``fcntl`` is missing (Windows) there is no lock.
+
+    Raises
+    ------
+    ResultsBusyError
+        Another run holds the folder.
+
+    >>> import tempfile
+    >>> with tempfile.TemporaryDirectory() as d, results_lock(Path(d)):
+    ...     try:
+    ...         with results_lock(Path(d)):
+    ...             pass
+    ...     except ResultsBusyError as exc:
+    ...         print(str(exc).startswith("another run is writing"), isinstance(exc, BlockingIOError))
+    True True
+    """
+    try:
+        import fcntl
+    except ImportError:  # pragma: no cover - not POSIX
+        yield
+        return
+    key = os.path.realpath(folder)
+    if key in _HELD:
+        yield
+        return
+    fd = os.open(folder, os.O_RDONLY)
+    try:
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            msg = (f"another run is writing to {folder}; expected a folder no other run uses: "
+                   "wait for it, or give another --out")
+            raise ResultsBusyError(msg) from None
+        _HELD.add(key)
+        try:
+            yield
+        finally:
+            _HELD.discard(key)
+    finally:
+        os.close(fd)
+
+
+_HELD: set[str] = set()  # the folders this process holds (results_lock)
+
+
 # --------------------------------------------------------------------------- executors
 
 
@@ -425,6 +483,16 @@ def run_compare(
     versions = tool_versions()
     outdir = Path(out)
     outdir.mkdir(parents=True, exist_ok=True)
+    with results_lock(outdir):
+        return _compare_into(outdir, corpus, info, versions, workers=workers, scheduler=scheduler,
+                             limit=limit, progress=progress, stop_after=stop_after, batch=batch, fresh=fresh,
+                             say=say)
+
+
+def _compare_into(outdir: Path, corpus: str | os.PathLike[str], info: CorpusInfo, versions: dict[str, str], *,
+                  workers: int | None, scheduler: str | None, limit: int | None, progress: bool,
+                  stop_after: int | None, batch: int, fresh: bool, say: Any) -> dict[str, Any]:
+    """:func:`run_compare` once the folder is held: resume or start ``results.jsonl``, run, summarize."""
     results_path = outdir / "results.jsonl"
     expected = info.ids[:limit] if limit is not None else info.ids
     done_ids = {r.get("id") for r in open_results(results_path, info, versions, fresh=fresh, say=say)}

@@ -4,6 +4,7 @@ up front, bad numbers and names refused by one line (exit status 2), damaged res
 from __future__ import annotations
 
 import json
+import multiprocessing
 import os
 import signal
 import subprocess
@@ -14,7 +15,14 @@ from pathlib import Path
 import pytest
 from relief_cad_workbench.__main__ import EXIT_BAD_INPUT, EXIT_INTERRUPTED, main
 from relief_cad_workbench.corpus import random_family, write_corpus
-from relief_cad_workbench.run import damaged_path, load_results, repair_results
+from relief_cad_workbench.run import (
+    ResultsBusyError,
+    damaged_path,
+    load_results,
+    repair_results,
+    results_lock,
+    run_compare,
+)
 
 from .test_cli_inputs import ROOT, cli, error_line
 
@@ -250,3 +258,35 @@ def test_a_scheduler_address_that_cannot_be_used_is_one_error_line(address, smal
     line = error_line(proc)
     assert "--scheduler: expected the address of a running Dask scheduler" in line and repr(address) in line
     assert "Traceback" not in proc.stderr
+
+
+# ---------------------------------------------------------------------- 7. one run per folder
+
+
+@pytest.mark.parametrize("command", [("compare", "SMALL"), ("compare", "SMALL", "--fresh"), ("quickstart", "--fresh")])
+def test_a_folder_another_run_is_writing_to_is_refused_and_left_alone(command, small, tmp_path):
+    """Two runs on one --out interleaved their lines, and a --fresh one deleted the other's results."""
+    out = tmp_path / "run"
+    assert cli("compare", small, "--out", out, "--workers", "1", "--quiet").returncode == 0
+    before = sorted((p.name, p.read_bytes()) for p in out.iterdir())
+    args = [small if a == "SMALL" else a for a in command]
+    with results_lock(out):  # another run holds the folder
+        proc = cli(*args, "--out", out, "--workers", "1", "--quiet")
+    assert proc.returncode == EXIT_BAD_INPUT, proc.stdout + proc.stderr
+    line = error_line(proc)
+    assert f"another run is writing to {out}" in line and "another --out" in line, line
+    assert sorted((p.name, p.read_bytes()) for p in out.iterdir()) == before
+    again = cli("compare", small, "--out", out, "--workers", "1", "--quiet")  # free again once it ends
+    assert again.returncode == 0 and "resuming: 4 of 4 items already done" in again.stderr
+
+
+def test_run_compare_in_a_held_folder_raises_a_blocking_io_error(small, tmp_path):
+    out = tmp_path / "run"
+    out.mkdir()
+    with results_lock(out), pytest.raises(ResultsBusyError) as err:
+        with results_lock(out.parent / "run"):  # this process may enter again (quickstart does)
+            pass
+        with multiprocessing.get_context("spawn").Pool(1) as pool:  # another process: refused
+            pool.apply(run_compare, (small, out), {"workers": 1, "progress": False})
+    assert isinstance(err.value, BlockingIOError) and "another run is writing to" in str(err.value)
+    assert list(out.iterdir()) == []
