@@ -658,14 +658,16 @@ def _contact_root(coef: FloatArray) -> float | None:
 
     A contact of order ``m`` makes the tangency function vanish to order ``m - 1``; its
     ``(m - 2)``-th derivative has a simple root there, well conditioned even where the function
-    itself is below rounding (deflation by differentiation).
+    itself is below rounding (deflation by differentiation). Near 0 is within a quarter of the
+    window: the estimate of a contact of order four in data rounded at coordinates of 2,000 (an
+    ellipse and its osculating circle at a vertex) lies 0.06 of the window off it.
     """
     grid = np.linspace(-1.0, 1.0, 41)
     for j in range(4):
         q = P.polyder(coef, j) if j else coef
         dq = P.polyder(q)
         scale = float(np.abs(P.polyval(grid, dq)).max())
-        roots = [float(r.real) for r in P.polyroots(q) if abs(r.imag) < 1e-9 and abs(r.real) < 0.05]
+        roots = [float(r.real) for r in P.polyroots(q) if abs(r.imag) < 1e-9 and abs(r.real) < 0.25]
         roots.sort(key=abs)
         if roots and scale > 0.0 and abs(float(P.polyval(roots[0], dq))) >= 1e-3 * scale:
             return roots[0]
@@ -714,9 +716,13 @@ def _locate(a: RationalBezier, b: RationalBezier, p: Intersection, tol: float) -
     u = float(_foot(b, a.evaluate(np.array([t])))[0][0])
     gap = float(np.hypot.reduce(a.evaluate(t) - b.evaluate(u)))
     # the contact is the closest meeting: a root of the fit farther apart than the estimate (by more
-    # than rounding) is the fit's error (a curve touching its mirror image, 1e-16 apart at the
-    # kernel's point, was moved 8e-5 along to where they are 3.8e-8 apart)
-    if gap > min(tol, p.distance + rounding_floor(a, b)) or abs(u - p.u) > 1e-4:
+    # than rounding, 1e3 floors: curves mapped from a plane tilted at coordinates of 2,000 carry
+    # its rounding, 1e-13 at coordinates of 1) is the fit's error (a curve touching its mirror
+    # image, 1e-16 apart at the kernel's point, was moved 8e-5 along to where they are 3.8e-8
+    # apart); within the window in ``u`` as in ``t``: the rounding of a contact of order four (an
+    # ellipse and its osculating circle at a vertex) puts the kernel's estimate 1e-4 of ``t`` and
+    # 2e-4 of ``u`` off it
+    if gap > min(tol, p.distance + 1e3 * rounding_floor(a, b)) or abs(u - p.u) > w:
         return p
     return Intersection(t, u, 0.5 * (a.evaluate(t) + b.evaluate(u)), p.kind, gap)
 

@@ -11,6 +11,7 @@ import math
 
 import cython
 import numpy as np
+from cython.cimports.libc.math import sqrt
 
 from .bezier import _eval, _rounds
 
@@ -121,6 +122,32 @@ def _eval_dd(
     xh, xl = _dd_div(wk[0, 0], wk[0, 1], wk[0, 4], wk[0, 5])
     yh, yl = _dd_div(wk[0, 2], wk[0, 3], wk[0, 4], wk[0, 5])
     return xh, xl, yh, yl
+
+
+def _side_dd(
+    HA: cython.const[cython.double][:, :],
+    HB: cython.const[cython.double][:, :],
+    t: cython.double,
+    u: cython.double,
+    wb: cython.double[:, :],
+    da: cython.double[:, :],
+    db: cython.double[:, :],
+) -> cython.double:
+    """Signed distance of ``a(t)`` from ``b`` at ``b(u)`` (its foot), ``a - b`` in double-double.
+
+    Positive on the left of ``b``'s direction. The difference of the points is exact to about
+    ``eps**2`` (:func:`_eval_dd`), so a gap of 1e-20 between exact data keeps its sign, where the
+    double evaluation's rounding (1e-16) decides it at random. ``wb``, ``da``, ``db``: scratch.
+    """
+    axh, axl, ayh, ayl = _eval_dd(HA, t, da)
+    bxh, bxl, byh, byl = _eval_dd(HB, u, db)
+    fx, fxl = _dd_add(axh, axl, -bxh, -bxl)
+    fy, fyl = _dd_add(ayh, ayl, -byh, -byl)
+    _bx, _by, bdx, bdy, _b2, _b3 = _eval(HB, u, wb)
+    speed = sqrt(bdx * bdx + bdy * bdy)
+    if speed == 0.0:
+        return 0.0
+    return (bdx * (fy + fyl) - bdy * (fx + fxl)) / speed
 
 
 def _polish_dd(

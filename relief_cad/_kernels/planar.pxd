@@ -1,9 +1,9 @@
 # pure-Python mode: the helpers planar.py imports are called as C functions (see bezier.pxd, clip.pxd,
 # polish.pxd, certify.pxd)
 from relief_cad._kernels.bezier cimport _cartesian, _curve_box_update, _eval, _frame, _homog_into, _segment
-from relief_cad._kernels.certify cimport _polish_dd
+from relief_cad._kernels.certify cimport _polish_dd, _side_dd
 from relief_cad._kernels.clip cimport clip_range_kernel, fat_line_kernel
-from relief_cad._kernels.polish cimport _angle_sin, _closest, _coincide, _local_dist, _newton, _point_on
+from relief_cad._kernels.polish cimport _angle_sin, _closest, _coincide, _local_dist, _local_proj, _newton, _point_on
 
 # the pair driver without the GIL and its helpers, called as C functions by batch.py (cpdef: the
 # uncompiled switch imports them as Python functions)

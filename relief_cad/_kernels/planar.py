@@ -15,7 +15,7 @@ import numpy as np
 from cython.cimports.libc.math import hypot, sqrt
 
 from .bezier import _cartesian, _curve_box_update, _eval, _frame, _grow, _homog_into, _segment
-from .certify import _polish_dd
+from .certify import _polish_dd, _side_dd
 from .clip import clip_range_kernel, fat_line_kernel
 from .constants import (
     _EPS,
@@ -27,7 +27,7 @@ from .constants import (
     KIND_UNRESOLVED,
     RES_COLS,
 )
-from .polish import _angle_sin, _closest, _coincide, _local_dist, _newton, _point_on
+from .polish import _angle_sin, _closest, _coincide, _local_dist, _local_proj, _newton, _point_on
 
 _INF = cython.declare(cython.double, math.inf)  # a C constant (``math.inf`` is a Python lookup)
 # constants.py is plain Python (its names are Python objects): C copies for the loops
@@ -40,6 +40,7 @@ _K_OVERLAP = cython.declare(cython.double, KIND_OVERLAP)
 _K_UNRESOLVED = cython.declare(cython.double, KIND_UNRESOLVED)
 _NSMALL = cython.declare(cython.Py_ssize_t, 24)  # candidates and points held in the scratch buffer
 _NRES = cython.declare(cython.Py_ssize_t, 64)  # result rows made with the scratch when res is None
+_ROUNDING_ROOT = cython.declare(cython.double, 0.5)  # column 5 of a point: a root only rounding makes
 
 
 @cython.cfunc
@@ -192,6 +193,69 @@ def _crosses(HA: cython.const[cython.double][:, :], HB: cython.const[cython.doub
     ka = abs(adx * addy - ady * addx) / (la * la * la)
     kb = abs(bdx * bddy - bdy * bddx) / (lb * lb * lb)
     return abs(adx * bdy - ady * bdx) / (la * lb) >= max(1e-7, 8.0 * sqrt(rnd * (ka + kb)))
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _unmeasured_crossing(HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :],
+                         t: cython.double, u: cython.double, level: cython.double, wa: cython.double[:, :],
+                         wb: cython.double[:, :], da: cython.double[:, :],
+                         db: cython.double[:, :]) -> cython.bint:
+    """True when ``a`` keeps to one side of ``b`` across a root ``(t, u)``, once apart by ``level``.
+
+    Walking out from the root on each side of ``t`` (steps growing by 1.5 from 1e-10 to 0.05), the
+    first signed distance of ``a`` from ``b`` (:func:`_side_dd`: double-double, the data taken
+    exactly) above ``level`` has the same sign on both sides. False when a side runs off the curve
+    first, or stays within ``level`` up to 0.05.
+    """
+    e: cython.int
+    sides: cython.int = 0
+    d: cython.double
+    g: cython.double
+    for e in range(-1, 2, 2):
+        d = 1e-10
+        uu: cython.double = u
+        g = 0.0
+        while d < 0.05 and abs(g) <= level:
+            tt: cython.double = t + e * d
+            if tt < 0.0 or tt > 1.0:
+                return False
+            x, y, _a, _b, _c, _d = _eval(HA, tt, wa)
+            uu = _local_proj(HB, x, y, uu, wb)
+            g = _side_dd(HA, HB, tt, uu, wb, da, db)
+            d *= 1.5
+        if abs(g) <= level:
+            return False
+        sides += 1 if g > 0.0 else -1
+    return sides != 0
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _rounding_root(HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :],
+                   t: cython.double, u: cython.double, alone: cython.bint, floor: cython.double,
+                   wa: cython.double[:, :], wb: cython.double[:, :], da: cython.double[:, :],
+                   db: cython.double[:, :]) -> cython.bint:
+    """True when a certified root at ``(t, u)`` at a tiny angle is no crossing of the data: a touch.
+
+    - The exact data do not cross there (the first gap above double-double's rounding, 1e-28,
+      has one sign both ways): a Bezier arc of an ellipse and a circle osculating it at its vertex
+      (contact of order four) met in double evaluation at roots 4.7e-5 either side of the
+      vertex, where the data are 1e-16 apart, the tangents at sin 4e-12.
+    - Or ``alone`` (the cluster's only root, or one at sin below 1e-12, a touch's by the angle
+      alone) and the curves part to one side both ways by more than rounding (``4 floor``): a
+      touch crosses an even number of times, and the clusters missed the other crossing (the same
+      contact with the circle turned by 0.3), or rounding made two (a parabola and its osculating
+      circle at the vertex, both spans converted from OCCT, cross 3.7e-4 apart at sin 1e-13).
+
+    Two roots of a cluster however close stay crossings where the data cross: a parabola
+    crossing a line at exact roots 7e-9 apart is 1e-17 below it between them.
+    """
+    if _unmeasured_crossing(HA, HB, t, u, 1e-28, wa, wb, da, db):
+        return True
+    return alone and _unmeasured_crossing(HA, HB, t, u, 4.0 * floor, wa, wb, da, db)
 
 
 @cython.cfunc
@@ -1066,9 +1130,16 @@ def _pair_core(
             if j == i:
                 sn = _angle_sin(HA, HB, roots[i, 0], roots[i, 1], wa, wb)
                 kind = k_crossing
+                cert = roots[i, 2]
                 if roots[i, 2] == 1.0:
-                    # a certified (simple) root crosses, however small the angle
-                    if sn < 1e-12:
+                    # a certified (simple) root crosses, however small the angle, unless rounding
+                    # alone makes it one (the curves part to one side both ways): then it is a
+                    # touch, one contact with the cluster's other such roots (the dedupe's rule)
+                    if sn < 1e-7 and _rounding_root(HA, HB, roots[i, 0], roots[i, 1],
+                                                    nroots == 1 or sn < 1e-12, floor, wa, wb, da, db):
+                        kind = k_tangent
+                        cert = _ROUNDING_ROOT
+                    elif sn < 1e-12:
                         kind = k_tangent
                 elif nunc == 1 and sn < 1e-7:  # the cluster's one uncertified root: a touch
                     kind = k_tangent
@@ -1081,7 +1152,7 @@ def _pair_core(
                 pts[npts, 2] = 0.0
                 pts[npts, 3] = kind
                 pts[npts, 4] = 1.0
-                pts[npts, 5] = roots[i, 2]
+                pts[npts, 5] = cert
                 npts += 1
             else:
                 t, u, d = _closest(
@@ -1119,7 +1190,14 @@ def _pair_core(
             noise = False  # a crossing root merged into an end contact away from it
             dt = abs(pts[i, 0] - pts[j, 0])
             du = abs(pts[i, 1] - pts[j, 1])
-            if pts[i, 5] == 1.0 and pts[j, 5] == 1.0 and (dt > 1e-13 or du > 1e-13):
+            if pts[i, 5] == _ROUNDING_ROOT and pts[j, 5] == _ROUNDING_ROOT and dt <= 0.05 and du <= 0.05 and (
+                    _gap_between(HA, HB, pts[i, 0], pts[i, 1], pts[j, 0], pts[j, 1], wa, wb) <= 4.0 * floor):
+                # roots of one touch that rounding made (_rounding_root), no gap between them: the
+                # touch lies between them (a contact of order four, split symmetrically)
+                pts[i, 0] = 0.5 * (pts[i, 0] + pts[j, 0])
+                pts[i, 1] = 0.5 * (pts[i, 1] + pts[j, 1])
+                same = True
+            elif pts[i, 5] == 1.0 and pts[j, 5] == 1.0 and (dt > 1e-13 or du > 1e-13):
                 # certified roots found distinct (a touch that rounding split into two crossings
                 # 8e-10 apart): two roots however close, as the clusters decided
                 same = False

@@ -52,7 +52,7 @@ from OCP.Geom import Geom_BezierCurve, Geom_Curve, Geom_TrimmedCurve
 from OCP.Geom2d import Geom2d_BezierCurve
 from OCP.GeomAbs import GeomAbs_Shape
 from OCP.GeomConvert import GeomConvert_ApproxCurve, GeomConvert_BSplineCurveToBezierCurve
-from OCP.gp import gp_Pnt, gp_Pnt2d
+from OCP.gp import gp_Pnt, gp_Pnt2d, gp_Vec
 from OCP.Precision import Precision
 from OCP.TopAbs import TopAbs_FORWARD, TopAbs_REVERSED
 from OCP.TopLoc import TopLoc_Location
@@ -747,6 +747,37 @@ def edge_value(edge: Any, t: float) -> tuple[float, float, float]:
     (0.5, 0.0, 0.0)
     """
     return BRepAdaptor_Curve(as_edge(edge)).Value(float(t)).Coord()  # type: ignore[no-any-return]
+
+
+def edge_foot(edge: Any, point: Sequence[float], u: float, steps: int = 8) -> tuple[float, float]:
+    """The foot on an edge of ``point`` near the edge's parameter ``u``, and the distance to it.
+
+    A few Newton steps on the squared distance (``BRepAdaptor_Curve``, global coordinates),
+    kept in the edge's range; a local foot, for points close to the edge near ``u``.
+
+    Examples
+    --------
+    >>> line = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(2, 0, 0)).Edge()
+    >>> edge_foot(line, (0.5, 0.25, 0.0), 1.5)
+    (0.5, 0.25)
+    """
+    curve = BRepAdaptor_Curve(as_edge(edge))
+    lo, hi = curve.FirstParameter(), curve.LastParameter()
+    p, d1, d2 = gp_Pnt(), gp_Vec(), gp_Vec()
+    x = np.asarray(point, dtype=float)
+    for _ in range(steps):
+        curve.D2(u, p, d1, d2)
+        f = np.array(p.Coord()) - x
+        g1, g2 = np.array(d1.Coord()), np.array(d2.Coord())
+        h = float(g1 @ g1 + f @ g2)
+        h = h if h > 0.0 else float(g1 @ g1)
+        if h == 0.0:
+            break
+        nu = min(hi, max(lo, u - float(f @ g1) / h))
+        if nu == u:
+            break
+        u = nu
+    return u, math.dist(curve.Value(u).Coord(), x)
 
 
 # --------------------------------------------------------------------------- planar frame
