@@ -124,6 +124,29 @@ def _eval_dd(
     return xh, xl, yh, yl
 
 
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _gap_dd(
+    HA: cython.const[cython.double][:, :],
+    HB: cython.const[cython.double][:, :],
+    t: cython.double,
+    u: cython.double,
+    da: cython.double[:, :],
+    db: cython.double[:, :],
+) -> tuple[cython.double, cython.double, cython.double, cython.double]:
+    """``a(t) - b(u)`` in double-double ``(xh, xl, yh, yl)``: :func:`_eval_dd` of both points.
+
+    ``da``, ``db``: scratch. The one home of the certified residual: :func:`_polish_dd` steps
+    on it, :func:`_side_dd` takes its side.
+    """
+    axh, axl, ayh, ayl = _eval_dd(HA, t, da)
+    bxh, bxl, byh, byl = _eval_dd(HB, u, db)
+    fx, fxl = _dd_add(axh, axl, -bxh, -bxl)
+    fy, fyl = _dd_add(ayh, ayl, -byh, -byl)
+    return fx, fxl, fy, fyl
+
+
 def _side_dd(
     HA: cython.const[cython.double][:, :],
     HB: cython.const[cython.double][:, :],
@@ -139,10 +162,7 @@ def _side_dd(
     ``eps**2`` (:func:`_eval_dd`), so a gap of 1e-20 between exact data keeps its sign, where the
     double evaluation's rounding (1e-16) decides it at random. ``wb``, ``da``, ``db``: scratch.
     """
-    axh, axl, ayh, ayl = _eval_dd(HA, t, da)
-    bxh, bxl, byh, byl = _eval_dd(HB, u, db)
-    fx, fxl = _dd_add(axh, axl, -bxh, -bxl)
-    fy, fyl = _dd_add(ayh, ayl, -byh, -byl)
+    fx, fxl, fy, fyl = _gap_dd(HA, HB, t, u, da, db)
     _bx, _by, bdx, bdy, _b2, _b3 = _eval(HB, u, wb)
     speed = sqrt(bdx * bdx + bdy * bdy)
     if speed == 0.0:
@@ -169,10 +189,7 @@ def _polish_dd(
     keeps moving and is not certified.
     """
     for _ in range(steps):
-        axh, axl, ayh, ayl = _eval_dd(HA, t, da)
-        bxh, bxl, byh, byl = _eval_dd(HB, u, db)
-        fx, _fxl = _dd_add(axh, axl, -bxh, -bxl)
-        fy, _fyl = _dd_add(ayh, ayl, -byh, -byl)
+        fx, _fxl, fy, _fyl = _gap_dd(HA, HB, t, u, da, db)
         if fx == 0.0 and fy == 0.0:
             return t, u, True
         _ax, _ay, adx, ady, _a2, _a3 = _eval(HA, t, wa)
