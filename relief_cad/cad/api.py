@@ -815,7 +815,8 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
     points: list[_Raw] = []
     crossings: list[int] = []  # per kept point: the distinct crossings it stands for
     floor: float | None = None  # the rounding floor of both edges, found on first use
-    for r in sorted((r for r in raws if r.kind != "overlap"), key=lambda r: r.distance):
+    found = [r for r in raws if r.kind != "overlap"]
+    for r in sorted(found if same else _joint_meetings(found, tol), key=lambda r: r.distance):
         t, u = r.t, r.u
         if same:
             # the same point of one edge (a segment joint), or the closing point of a closed edge
@@ -833,9 +834,6 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
             continue
         if any(_inside(o, r, tol) for o in merged):
             continue
-        if r.kind == "tangent" and not same:
-            floor = floor if floor is not None else _pair_floor(r)
-            r = _joint_crossing(r, floor)
         if points and r.distance > 0.0:
             floor = floor if floor is not None else _pair_floor(r)
             if _on_flank(r, points, floor):
@@ -966,8 +964,43 @@ def _on_flank(r: _Raw, points: list[_Raw], floor: float) -> bool:
                and _stretch_within(p, r, lim) for p in points)
 
 
-def _joint_crossing(r: _Raw, floor: float) -> _Raw:
-    """``r`` as a crossing when it is a touch at a joint of spans where the edges cross, else ``r``.
+def _joint_meetings(found: list[_Raw], tol: float) -> list[_Raw]:
+    """Point contacts of two distinct edges, each meeting at an inner joint of spans decided once.
+
+    Every span pair at a joint reports the meeting there by the core's rule for a span's end, which
+    sees one span only: one pair may call it a crossing, another a touch. The copies (one place and
+    the same parameters, :func:`_same_place`) are one meeting. When one of them is a touch, the one
+    nearest the other edge is decided by the edges on both sides (:func:`_joint_sides`) and,
+    when it stays a touch, placed where it is (:func:`_joint_touch`); the rest are dropped. Where the
+    sides do not decide (:func:`_joint_sides` gives None) and no touch lies nearby, the nearest
+    copy stands as the core gave it. A cubic B-spline touching a line 2e-7 of its range after a
+    knot was a crossing at the knot.
+    """
+    joints = [r for r in found if _inner_joint(r)]
+    if not any(r.kind == "tangent" for r in joints):
+        return found
+    out = [r for r in found if not any(r is q for q in joints)]
+    floor = _pair_floor(joints[0])
+    while joints:
+        group = [q for q in joints if _same_place(joints[0], q, tol)]
+        joints = [q for q in joints if not any(q is g for g in group)]
+        best = min(group, key=lambda q: q.distance)
+        if all(q.kind == "crossing" for q in group):
+            out.extend(group)  # the later merge counts copies once (_same_place)
+            continue
+        cross = _joint_sides(best, floor)
+        kind = "crossing" if cross else "tangent"
+        decided = _Raw(best.ea, best.eb, best.t, best.u, best.point, kind, best.distance)
+        if not cross:
+            moved = _joint_touch(decided, tol, floor)
+            # undecided and no touch nearby: the core's nearest copy stands as it gave it
+            decided = moved if moved is not decided or cross is False else best
+        out.append(decided)
+    return out
+
+
+def _joint_sides(r: _Raw, floor: float) -> bool | None:
+    """Whether the edges cross at the meeting ``r`` at a joint of spans: True, False (a touch) or None.
 
     The core labels a meeting at an end of a span by its angle alone (an end meeting at sine below
     1e-7 is a touch): it sees one span at a time. Across a joint, the edges show which it is. On
@@ -975,34 +1008,94 @@ def _joint_crossing(r: _Raw, floor: float) -> _Raw:
     offset of ``a`` from its foot on ``b`` longer than ``floor`` is taken (64 ulps of the
     coordinates: far above the rounding of the evaluation, and short of another crossing nearby
     whenever the edges part by more than rounding between): offsets in opposite directions are a
-    crossing. A spline through 17 points of a circle crosses the circle at
-    sine 1e-8 at one of its knots (4e-5 after crossing it the other way); that was a touch.
-    Only meetings within ``floor``, at no end of either edge, are looked at: a near-miss within
-    tol stays one touch, and so does an end meeting (the edge does not go on past it).
+    crossing, in one direction a touch. A spline through 17 points of a circle crosses the circle
+    at sine 1e-8 at one of its knots (4e-5 after crossing it the other way); that was a touch.
+    None (undecided) when the meeting is farther apart than ``floor``, when a side stays within
+    ``floor`` up to 1e-3 of the span, or when an edge ends first.
     """
-    if (r.distance > floor or not (_at_joint(r.ea, r.t) or _at_joint(r.eb, r.u))
-            or any(_at_end(e, x, k, 1e-9) for e, x in ((r.ea, r.t), (r.eb, r.u)) for k in (0, 1))):
-        return r  # an end meeting of either edge keeps the end rule (b may not go on past it)
+    if r.distance > floor:
+        return None
     span, sides = _span_at(r.ea, r.t), []
     for sense in (-1.0, 1.0):
         h, off = 1e-9 * span, None
         while off is None and h <= 1e-3 * span:
             t = r.t + sense * h
             if not r.ea.first <= t <= r.ea.last:
-                return r
+                return None
             pa = ocp.edge_value(r.ea.edge, t)
             fu = ocp.edge_foot(r.eb.edge, pa, r.u)[0]
             if not r.eb.first < fu < r.eb.last:
-                return r  # b ends there: no foot across from a
+                return None  # b ends there: no foot across from a
             a, foot = np.array(pa), np.array(ocp.edge_value(r.eb.edge, fu))
             off = a - foot if math.dist(pa, foot) > floor else None
             h *= 2.0
         if off is None:
-            return r
+            return None
         sides.append(off)
-    if float(sides[0] @ sides[1]) >= 0.0:
+    return float(sides[0] @ sides[1]) < 0.0
+
+
+def _inner_joint(r: _Raw) -> bool:
+    """True when contact ``r`` lies at a joint of spans of either edge and at no end of either edge.
+
+    An end meeting keeps the core's end rule: the edge does not go on past it.
+    """
+    if not (_at_joint(r.ea, r.t) or _at_joint(r.eb, r.u)):
+        return False
+    return not any(_at_end(e, x, k, 1e-9) for e, x in ((r.ea, r.t), (r.eb, r.u)) for k in (0, 1))
+
+
+# below this sine the tangents at a joint are parallel (measured: B-splines touching a line 5e-8 to
+# 2e-5 of their range past a knot, 1e-7 to 4e-5; the rounded tangents of contacts of order four at
+# a joint, below 1e-15)
+_JOINT_TOUCH_SIN = 1e-8
+
+
+def _joint_touch(r: _Raw, tol: float, floor: float) -> _Raw:
+    """A touch at an inner joint of spans, moved to where the edges' tangents are parallel.
+
+    The core places a meeting at a span's end on that end, while the touch itself may lie just
+    inside the next span: a quintic B-spline touches a line 7.5e-8 of its range after a knot,
+    1.2e-7 along the line, beyond tol 1e-7. Within 1e-4 of a span either side, the sign of
+    ``(a' x b') . n`` (``b`` at the foot of ``a``; ``n`` the normal of the edges' common plane)
+    is bisected down to adjacent doubles. The touch moves there when the edges are no farther
+    apart there than at the joint (plus ``floor``) and than ``tol``. Space pairs (no common
+    plane) keep the joint, and so does a touch whose tangents are parallel at the joint to
+    :data:`_JOINT_TOUCH_SIN`: near a contact of order four (an ellipse and its osculating circle
+    at a vertex, a joint of the ellipse's spans) the sine stays within rounding for 1e-5 of the
+    range, and its first sign change there is rounding's.
+    """
+    frame = r.ea.frame
+    if frame is None or r.distance > tol:
         return r
-    return _Raw(r.ea, r.eb, r.t, r.u, r.point, "crossing", r.distance)
+    normal = np.cross(frame[0, :3], frame[1, :3])
+
+    def turn(t: float) -> tuple[float, float]:  # the signed sine of b's tangent from a's, and u
+        u = ocp.edge_foot(r.eb.edge, ocp.edge_value(r.ea.edge, t), r.u)[0]
+        da, db = np.array(ocp.edge_tangent(r.ea.edge, t)), np.array(ocp.edge_tangent(r.eb.edge, u))
+        size = float(np.linalg.norm(da) * np.linalg.norm(db))
+        return (float(np.cross(da, db) @ normal) / size if size > 0.0 else 0.0), u
+
+    if abs(turn(r.t)[0]) < _JOINT_TOUCH_SIN:
+        return r  # the tangents are parallel at the joint, within their rounding: the touch is there
+    reach = 1e-4 * _span_at(r.ea, r.t)
+    lo, hi = max(r.ea.first, r.t - reach), min(r.ea.last, r.t + reach)
+    below = turn(lo)[0] < 0.0
+    if below == (turn(hi)[0] < 0.0):
+        return r
+    for _ in range(80):  # halving 2e-4 of a span to adjacent doubles takes at most about 60 steps
+        mid = 0.5 * (lo + hi)
+        if mid in (lo, hi):
+            break
+        lo, hi = (mid, hi) if (turn(mid)[0] < 0.0) == below else (lo, mid)
+    t = 0.5 * (lo + hi)
+    u = turn(t)[1]
+    pa, pb = ocp.edge_value(r.ea.edge, t), ocp.edge_value(r.eb.edge, u)
+    gap = math.dist(pa, pb)
+    if gap > min(tol, r.distance + floor) or not r.eb.first < u < r.eb.last:
+        return r
+    point = (0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]))
+    return _Raw(r.ea, r.eb, t, u, point, "tangent", gap)
 
 
 def _at_joint(e: _EdgeInfo, t: float) -> bool:

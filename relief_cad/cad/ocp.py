@@ -749,6 +749,19 @@ def edge_value(edge: Any, t: float) -> tuple[float, float, float]:
     return BRepAdaptor_Curve(as_edge(edge)).Value(float(t)).Coord()  # type: ignore[no-any-return]
 
 
+def edge_tangent(edge: Any, t: float) -> tuple[float, float, float]:
+    """Return an edge's first derivative at its own parameter ``t`` (``BRepAdaptor_Curve``, global).
+
+    Examples
+    --------
+    >>> edge_tangent(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(2, 0, 0)).Edge(), 0.5)
+    (1.0, 0.0, 0.0)
+    """
+    p, d1 = gp_Pnt(), gp_Vec()
+    BRepAdaptor_Curve(as_edge(edge)).D1(float(t), p, d1)
+    return d1.Coord()  # type: ignore[no-any-return]
+
+
 def edge_foot(edge: Any, point: Sequence[float], u: float, steps: int = 8) -> tuple[float, float]:
     """The foot on an edge of ``point`` near the edge's parameter ``u``, and the distance to it.
 
