@@ -992,7 +992,7 @@ def _joint_meetings(found: list[_Raw], tol: float) -> list[_Raw]:
         kind = "crossing" if cross else "tangent"
         decided = _Raw(best.ea, best.eb, best.t, best.u, best.point, kind, best.distance)
         if not cross:
-            moved = _joint_touch(decided, tol, floor)
+            moved = _joint_touch(decided, tol)
             # undecided and no touch nearby: the core's nearest copy stands as it gave it
             decided = moved if moved is not decided or cross is False else best
         out.append(decided)
@@ -1051,19 +1051,20 @@ def _inner_joint(r: _Raw) -> bool:
 _JOINT_TOUCH_SIN = 1e-8
 
 
-def _joint_touch(r: _Raw, tol: float, floor: float) -> _Raw:
+def _joint_touch(r: _Raw, tol: float) -> _Raw:
     """A touch at an inner joint of spans, moved to where the edges' tangents are parallel.
 
     The core places a meeting at a span's end on that end, while the touch itself may lie just
     inside the next span: a quintic B-spline touches a line 7.5e-8 of its range after a knot,
     1.2e-7 along the line, beyond tol 1e-7. Within 1e-4 of a span either side, the sign of
     ``(a' x b') . n`` (``b`` at the foot of ``a``; ``n`` the normal of the edges' common plane)
-    is bisected down to adjacent doubles. The touch moves there when the edges are no farther
-    apart there than at the joint (plus ``floor``) and than ``tol``. Space pairs (no common
-    plane) keep the joint, and so does a touch whose tangents are parallel at the joint to
-    :data:`_JOINT_TOUCH_SIN`: near a contact of order four (an ellipse and its osculating circle
-    at a vertex, a joint of the ellipse's spans) the sine stays within rounding for 1e-5 of the
-    range, and its first sign change there is rounding's.
+    is bisected down to adjacent doubles. The touch moves there when the edges are less than a
+    quarter as far apart there as at the joint: a joint that meets ``b`` (two crossings within
+    rounding either side of a touch, one at the joint: the exact arbiter's point is that one)
+    keeps it. Space pairs (no common plane) keep the joint, and so does a touch whose tangents
+    are parallel at the joint to :data:`_JOINT_TOUCH_SIN`: near a contact of order four (an
+    ellipse and its osculating circle at a vertex, a joint of the ellipse's spans) the sine stays
+    within rounding for 1e-5 of the range, and its first sign change there is rounding's.
     """
     frame = r.ea.frame
     if frame is None or r.distance > tol:
@@ -1092,8 +1093,8 @@ def _joint_touch(r: _Raw, tol: float, floor: float) -> _Raw:
     u = turn(t)[1]
     pa, pb = ocp.edge_value(r.ea.edge, t), ocp.edge_value(r.eb.edge, u)
     gap = math.dist(pa, pb)
-    if gap > min(tol, r.distance + floor) or not r.eb.first < u < r.eb.last:
-        return r
+    if not gap < 0.25 * r.distance or not r.eb.first < u < r.eb.last:
+        return r  # not clearly closer than at the joint: the joint meets b (within rounding)
     point = (0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]))
     return _Raw(r.ea, r.eb, t, u, point, "tangent", gap)
 
