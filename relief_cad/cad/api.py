@@ -914,17 +914,20 @@ def _join_stretches(points: list[_Raw], crossings: list[int]) -> tuple[list[_Raw
 
 
 def _midway(p: _Raw, q: _Raw) -> _Raw:
-    """The contact halfway in ``t`` between crossings ``p`` and ``q`` that rounding made of one touch.
+    """The contact halfway in ``t`` between crossings ``p`` and ``q`` that rounding made of one touch."""
+    return _touch_at(p, 0.5 * (p.t + q.t), 0.5 * (p.u + q.u))
 
-    Its ``u`` is the foot on ``b`` there (:func:`~relief_cad.cad.ocp.edge_foot`); the point is
-    halfway between the edges.
+
+def _touch_at(r: _Raw, t: float, u: float) -> _Raw:
+    """A touch of ``r``'s edges at ``t`` on ``a``: its ``u`` the foot on ``b`` near ``u``, its point halfway.
+
+    The foot is :func:`~relief_cad.cad.ocp.edge_foot`; the distance is the one to it.
     """
-    t = 0.5 * (p.t + q.t)
-    a = ocp.edge_value(p.ea.edge, t)
-    u, dist = ocp.edge_foot(p.eb.edge, a, 0.5 * (p.u + q.u))
-    b = ocp.edge_value(p.eb.edge, u)
+    a = ocp.edge_value(r.ea.edge, t)
+    u, dist = ocp.edge_foot(r.eb.edge, a, u)
+    b = ocp.edge_value(r.eb.edge, u)
     point = (0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2]))
-    return _Raw(p.ea, p.eb, t, u, point, "tangent", dist)
+    return _Raw(r.ea, r.eb, t, u, point, "tangent", dist)
 
 
 def _near_params(p: _Raw, q: _Raw, frac: float = 1e-3) -> bool:
@@ -1089,14 +1092,10 @@ def _joint_touch(r: _Raw, tol: float) -> _Raw:
         if mid in (lo, hi):
             break
         lo, hi = (mid, hi) if (turn(mid)[0] < 0.0) == below else (lo, mid)
-    t = 0.5 * (lo + hi)
-    u = turn(t)[1]
-    pa, pb = ocp.edge_value(r.ea.edge, t), ocp.edge_value(r.eb.edge, u)
-    gap = math.dist(pa, pb)
-    if not gap < 0.25 * r.distance or not r.eb.first < u < r.eb.last:
+    touch = _touch_at(r, 0.5 * (lo + hi), r.u)
+    if not touch.distance < 0.25 * r.distance or not r.eb.first < touch.u < r.eb.last:
         return r  # not clearly closer than at the joint: the joint meets b (within rounding)
-    point = (0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2]))
-    return _Raw(r.ea, r.eb, t, u, point, "tangent", gap)
+    return touch
 
 
 def _at_joint(e: _EdgeInfo, t: float) -> bool:
