@@ -9,10 +9,18 @@ Compiled by Cython (pure-Python mode) when the package is built; see :mod:`relie
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 import cython
 import numpy as np
 from cython.cimports.libc.math import sqrt
+
+if cython.compiled:
+    from cython.cimports.libc.math import fma
+else:  # uncompiled (Python < 3.13 has no math.fma): the same correctly rounded a * b + c, exactly
+
+    def fma(a, b, c):
+        return float(Fraction(a) * Fraction(b) + Fraction(c))
 
 _INF = cython.declare(cython.double, math.inf)  # a C constant (``math.inf`` is a Python lookup)
 
@@ -393,6 +401,41 @@ def max_abs(P: cython.const[cython.double][:, :], ncols: cython.Py_ssize_t) -> c
         for c in range(min(ncols, P.shape[1])):
             big = max(big, abs(P[i, c]))
     return big
+
+
+def affine_rows(H: cython.const[cython.double][:, :], M: cython.const[cython.double][:, :],
+                out: cython.double[:, :]):
+    """Write ``H @ M.T`` (rows ``H`` (n, k), a map ``M`` (m, k), k <= 4) into ``out[:, :m]`` (may be ``H``).
+
+    Each entry is the chain ``fma(M[j, k-1], H[i, k-1], ... fma(M[j, 1], H[i, 1], M[j, 0] H[i, 0]))``,
+    every step rounded once (C99 ``fma``; exact fractions when uncompiled), so the result does not
+    depend on the machine's BLAS: numpy's ``H @ M.T`` is this chain where OpenBLAS uses FMA (x86-64
+    with AVX2) and differs in the last bit where it does not. The columns of ``out`` from ``m`` on
+    are left as they are (the weights, when ``out`` is ``H``).
+
+    >>> import numpy as np
+    >>> h = np.array([[1.0, 2.0, 3.0, 1.0]])
+    >>> affine_rows(h, np.array([[0.0, 1.0, 0.0, 5.0], [1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 2.0, 0.0]]), h)
+    >>> h.tolist()
+    [[7.0, 1.0, 6.0, 1.0]]
+    """
+    i: cython.Py_ssize_t
+    j: cython.Py_ssize_t
+    c: cython.Py_ssize_t
+    k: cython.Py_ssize_t = H.shape[1]
+    acc: cython.double
+    row = cython.declare(cython.double[4])
+    if M.shape[1] != k or k > 4 or k < 1 or out.shape[0] != H.shape[0] or out.shape[1] < M.shape[0]:
+        raise ValueError(f"expected rows (n, k), a map (m, k) with k <= 4 and out (n, >= m); received "
+                         f"{H.shape[0]}x{k}, {M.shape[0]}x{M.shape[1]} and {out.shape[0]}x{out.shape[1]}")
+    for i in range(H.shape[0]):
+        for c in range(k):
+            row[c] = H[i, c]  # the whole row first: out may be H
+        for j in range(M.shape[0]):
+            acc = M[j, 0] * row[0]
+            for c in range(1, k):
+                acc = fma(M[j, c], row[c], acc)
+            out[i, j] = acc
 
 
 def _bbox_update(P: cython.const[cython.double][:, :], box: cython.double[:]):

@@ -47,6 +47,7 @@ from OCP.BRep import BRep_Tool
 from OCP.TopExp import TopExp
 
 from .._kernels import KIND_CROSSING, KIND_TANGENT, KIND_UNRESOLVED
+from .._kernels.bezier import affine_rows
 from ..broadphase import box_pairs, box_pairs_between
 from ..clipping import batch_rows
 from ..curves import RationalBezier
@@ -300,7 +301,7 @@ def _to_plane(segment: ocp.Segment, frame: np.ndarray) -> RationalBezier:
     if frame is _XY_FRAME:
         return ocp._make_curve(h[:, (0, 1, 3)])
     h2 = np.empty((h.shape[0], 3))
-    h2[:, :2] = h @ frame.T
+    affine_rows(h, frame, h2)  # the plane's (u, v) of the rows, the same bits on every machine
     h2[:, 2] = h[:, 3]
     return ocp._make_curve(h2)
 

@@ -58,6 +58,7 @@ from OCP.TopAbs import TopAbs_FORWARD, TopAbs_REVERSED
 from OCP.TopLoc import TopLoc_Location
 from OCP.TopoDS import TopoDS_Edge, TopoDS_Vertex
 
+from .._kernels.bezier import affine_rows
 from ..curves import RationalBezier
 from ..errors import (
     DegenerateCurveError,
@@ -320,9 +321,13 @@ def _location_matrix(loc: TopLoc_Location) -> np.ndarray | None:
 
 
 def _apply(h: np.ndarray, m: np.ndarray | None) -> np.ndarray:
-    """Apply a 3x4 affine matrix to homogeneous rows ``[w x, w y, w z, w]`` (in place if possible)."""
+    """Apply a 3x4 affine matrix to homogeneous rows ``[w x, w y, w z, w]`` (n, 4), in place.
+
+    The products are summed by :func:`~relief_cad._kernels.bezier.affine_rows` (one FMA chain per
+    entry), the same bits on every machine whatever its BLAS.
+    """
     if m is not None:
-        h[..., :3] = h @ m.T
+        affine_rows(h, m, h)
     return h
 
 
