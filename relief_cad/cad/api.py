@@ -55,7 +55,7 @@ from ..errors import InvalidInputError
 from ..intersection import DEFAULT_BUDGET
 from ..pieces import along_chord
 from ..results import Intersection, Overlap
-from ..tolerances import ModelTolerance, default_tolerance, floor_of_magnitude, rounding_floor
+from ..tolerances import ModelTolerance, default_tolerance, floor_of_magnitude
 from . import ocp
 from ._checks import check_model_tol, check_tol
 from .flavour import flavour_of, wrap_edge, wrap_vertices
@@ -191,7 +191,7 @@ def _prepare(shape: Any, name: str) -> list[_EdgeInfo]:
     infos = []
     edges, _skipped = usable_edges(shape, name)  # degenerated edges skipped, unbounded ones refused
     for index, edge in edges:
-        segs = ocp.edge_segments(edge)
+        segs = ocp._bounded_segments(edge, *BRep_Tool.Range_s(edge))  # usable: checked once, above
         rows = [s.homogeneous.tolist() for s in segs]
         lows, highs, xy, ws = _boxes(segs, rows)
         if len(segs) == 1:
@@ -530,7 +530,7 @@ def _planar_arrays(e: _EdgeInfo) -> _Packed:
     The values are those of the segments' planar :class:`RationalBezier` curves
     (:func:`_curve2d`): the same homogeneous rows divided by the same weights. ``ends``
     holds per segment its first and last points in space, ``[x0, y0, z0, x1, y1, z1]``
-    (the rows divided by their weights, for :func:`_ends_meet_packed`).
+    (the rows divided by their weights, for :func:`_apart_pairs`).
     """
     if e._packed is None:
         frame = e.frame
@@ -598,17 +598,17 @@ def _pack(jobs: list[_Job]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndar
     return P, W, offsets, np.array(pairs, dtype=np.int64).reshape(-1, 2), ends
 
 
-def _ends_meet_packed(ends: list[list[float]], pairs: np.ndarray, tol: float) -> np.ndarray:
-    """Flag the packed pairs whose segments' ends meet: both within ``tol`` of the other's (bools).
+def _apart_pairs(ends: list[list[float]], pairs: np.ndarray, tol: float) -> list[int]:
+    """The indices of the packed pairs whose segments' ends do not meet (both within ``tol`` of the other's).
 
-    Nearness is the largest coordinate difference. Such pairs may coincide (a duplicate
-    edge), the clipping's slowest case: they go through ``relief_cad.intersect``, which
+    Nearness is the largest coordinate difference. Pairs whose ends meet may coincide (a
+    duplicate edge), the clipping's slowest case: they go through ``relief_cad.intersect``, which
     answers coincident curves before clipping. A few pairs are tested on Python floats
-    (numpy's cost per call is more than theirs), many in one numpy pass: the same
-    subtractions and comparisons.
+    (numpy's cost per call is more than theirs), many in one numpy pass: the same subtractions
+    and comparisons.
     """
     if pairs.shape[0] <= 32:
-        return np.array([_ends_meet(ends[i], ends[j], tol) for i, j in pairs.tolist()], dtype=bool)
+        return [k for k, (i, j) in enumerate(pairs.tolist()) if not _ends_meet(ends[i], ends[j], tol)]
     rows = np.array(ends).reshape(-1, 6)
     a, b = rows[pairs[:, 0]], rows[pairs[:, 1]]
 
@@ -616,11 +616,12 @@ def _ends_meet_packed(ends: list[list[float]], pairs: np.ndarray, tol: float) ->
         return np.abs(p - q).max(axis=1) <= tol  # type: ignore[no-any-return]
 
     a0, a1, b0, b1 = a[:, :3], a[:, 3:], b[:, :3], b[:, 3:]
-    return (near(a0, b0) & near(a1, b1)) | (near(a0, b1) & near(a1, b0))  # type: ignore[no-any-return]
+    meet = (near(a0, b0) & near(a1, b1)) | (near(a0, b1) & near(a1, b0))
+    return np.flatnonzero(~meet).tolist()  # type: ignore[no-any-return]
 
 
 def _ends_meet(a: list[float], b: list[float], tol: float) -> bool:
-    """:func:`_ends_meet_packed` for one pair of segments' end points ``[x0, y0, z0, x1, y1, z1]``."""
+    """True when two segments' ends meet (:func:`_apart_pairs`); end points ``[x0, y0, z0, x1, y1, z1]``."""
     d00 = max(abs(a[0] - b[0]), abs(a[1] - b[1]), abs(a[2] - b[2])) <= tol
     d11 = max(abs(a[3] - b[3]), abs(a[4] - b[4]), abs(a[5] - b[5])) <= tol
     d01 = max(abs(a[0] - b[3]), abs(a[1] - b[4]), abs(a[2] - b[5])) <= tol
@@ -631,7 +632,7 @@ def _ends_meet(a: list[float], b: list[float], tol: float) -> bool:
 def _solve_packed(jobs: list[_Job], tol: float) -> list[list[_Found] | None]:
     """Planar jobs in the common frame: one call of the batch kernel on packed control points.
 
-    A job whose segments' ends meet (:func:`_ends_meet_packed`) is left to the caller: None.
+    A job whose segments' ends meet (see :func:`_apart_pairs`) is left to the caller: None.
     """
     P, W, offsets, pairs, ends = _pack(jobs)
     return _batch_found(
@@ -649,13 +650,12 @@ def _batch_found(
     they are kept as they come. ``pair_of(k)`` names pair ``k``'s edges and segments, for the
     budget error of an unresolved pair.
     """
-    run = np.flatnonzero(~_ends_meet_packed(ends, pairs, tol))
+    which = _apart_pairs(ends, pairs, tol)
     rows: list[list[float]] = []
-    if run.size:
-        tols = np.full(run.shape[0], tol)
-        rows = batch_rows(P, W, offsets, pairs[run], tols, DEFAULT_BUDGET).tolist()  # on every core
+    if which:
+        run = pairs if len(which) == pairs.shape[0] else pairs[which]
+        rows = batch_rows(P, W, offsets, run, np.full(len(which), tol), DEFAULT_BUDGET).tolist()  # every core
     out: list[list[_Found] | None] = [None] * pairs.shape[0]
-    which = run.tolist()
     for k in which:
         out[k] = []
     for r in rows:
@@ -1118,7 +1118,16 @@ def _span_at(e: _EdgeInfo, t: float) -> float:
 
 def _pair_floor(p: _Raw) -> float:
     """The rounding floor of the control points of both edges of contact ``p`` (from their boxes)."""
-    return floor_of_magnitude(max(map(abs, (*p.ea.lo, *p.ea.hi, *p.eb.lo, *p.eb.hi))))
+    return _box_floor(p.ea.lo, p.ea.hi, p.eb.lo, p.eb.hi)
+
+
+def _box_floor(*corners: _Point3) -> float:
+    """The rounding floor of control points within boxes with these corners: ``rounding_floor`` of them.
+
+    The largest magnitude is that of a corner's coordinate, so the floor is found on the floats
+    (numpy's reductions cost more than this on a few corners).
+    """
+    return floor_of_magnitude(max(abs(c) for corner in corners for c in corner))
 
 
 def _stretch_within(p: _Raw, q: _Raw, tol: float) -> bool:
@@ -1336,7 +1345,7 @@ def _run(a: Any, b: Any, tol: float | None, *,
     box = _joint_box(model)
     # one tolerance for the whole model: the default or the given tol checked against the edges' size,
     # raised to the rounding floor of their control points; not capped again per segment pair
-    ftol = ModelTolerance(max(_default_tol(model, box), rounding_floor(np.array(box)))) if tol is None \
+    ftol = ModelTolerance(max(_default_tol(model, box), _box_floor(*box))) if tol is None \
         else check_model_tol(tol, [e.edge for e in model])
     frame = _common_frame(model, ftol, box)
     _set_plane(model, frame)

@@ -354,24 +354,25 @@ def _quadratic_spans(
     first: float,
     last: float,
     m: np.ndarray | None,
-    hyperbolic: bool,
+    kind: str,
 ) -> list[Segment]:
     """Rational quadratic spans of an ellipse (circle) or hyperbola arc, in closed form.
 
     Ellipse: ``P(θ) = O + a cos θ X + b sin θ Y``; a span of half-angle ``α`` around
     ``θm`` has weights ``1, cos α, 1`` and middle point ``O + (a cos θm X + b sin θm Y) / cos α``.
-    Hyperbola: the same with ``cosh`` / ``sinh``.
+    Hyperbola: the same with ``cosh`` / ``sinh``. ``kind`` is the curve's :func:`curve_kind`:
+    ``"circle"``, ``"ellipse"`` or ``"hyperbola"``.
     """
     frame = _conic_frame(curve)
     fx: Any
     fy: Any
     fs: Any
-    if hyperbolic:
+    if kind == "hyperbola":
         a, b = curve.MajorRadius(), curve.MinorRadius()
         fx, fy, fs = math.cosh, math.sinh, math.tanh
         max_span, mapping = MAX_HYPERBOLA_SPAN, "hyperbolic"
     else:
-        if curve_kind(curve) == "circle":
+        if kind == "circle":
             a = b = curve.Radius()
         else:
             a, b = curve.MajorRadius(), curve.MinorRadius()
@@ -653,9 +654,27 @@ def edge_segments(
     e = as_edge(edge)
     if BRep_Tool.Degenerated_s(e):
         raise DegenerateCurveError("expected an edge with a curve; received a degenerated edge (a point)")
+    first, last = check_bounded(e)
+    return _bounded_segments(e, first, last, approximate, approximation_tolerance)
+
+
+def _bounded_segments(
+    e: TopoDS_Edge, first: float, last: float, approximate: bool = True,
+    approximation_tolerance: float = APPROXIMATION_TOLERANCE,
+) -> list[Segment]:
+    """:func:`edge_segments` of a raw edge already checked: not degenerated, range ``[first, last]`` bounded.
+
+    The path of callers that have checked their edges once (:func:`~relief_cad.cad.topology.usable_edges`).
+
+    Raises
+    ------
+    DegenerateCurveError
+        If ``first >= last``, or the edge has zero length.
+    UnsupportedCurveError
+        As :func:`edge_segments`.
+    """
     loc = TopLoc_Location()
     curve = BRep_Tool.Curve_s(e, loc, 0.0, 0.0)
-    first, last = check_bounded(e)
     if not last > first:
         raise DegenerateCurveError(
             f"expected an edge with a parameter range t0 < t1; received [{first}, {last}] (zero length)"
@@ -678,7 +697,7 @@ def _curve_segments(
     if kind == "line":
         return _line_segment(curve, first, last, m)
     if kind in ("circle", "ellipse", "hyperbola"):
-        return _quadratic_spans(curve, first, last, m, hyperbolic=kind == "hyperbola")
+        return _quadratic_spans(curve, first, last, m, kind)
     if kind == "bspline":
         return _check_length(_bspline_segments(curve, first, last, m))
     if kind == "bezier":
@@ -896,6 +915,9 @@ def trim_edge(edge: Any, t0: float, t1: float) -> TopoDS_Edge:
     return downcast_edge(new.Oriented(e.Orientation()))
 
 
+_PCONFUSION = float(Precision.PConfusion_s())  # OCCT's parametric confusion, a constant (1e-9)
+
+
 def edge_on_curve(curve: Any, t0: float, t1: float, v0: Any = None, v1: Any = None) -> TopoDS_Edge:
     """An edge on ``curve`` over ``[t0, t1]`` (``t0 < t1``), between vertices ``v0`` and ``v1`` or new ones.
 
@@ -919,7 +941,7 @@ def edge_on_curve(curve: Any, t0: float, t1: float, v0: Any = None, v1: Any = No
     >>> t1 - t0 < 1e-9
     True
     """
-    if t1 - t0 <= Precision.PConfusion_s() and basis_curve(curve).IsPeriodic():
+    if t1 - t0 <= _PCONFUSION and basis_curve(curve).IsPeriodic():
         return _short_periodic_edge(basis_curve(curve), t0, t1, v0, v1)
     if v0 is None:
         maker = BRepBuilderAPI_MakeEdge(curve, t0, t1)
