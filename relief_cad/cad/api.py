@@ -978,17 +978,24 @@ def _joint_meetings(found: list[_Raw], tol: float) -> list[_Raw]:
     when it stays a touch, placed where it is (:func:`_joint_touch`); the rest are dropped. Where the
     sides do not decide (:func:`_joint_sides` gives None) and no touch lies nearby, the nearest
     copy stands as the core gave it. A cubic B-spline touching a line 2e-7 of its range after a
-    knot was a crossing at the knot.
+    knot was a crossing at the knot. A meeting farther apart than the rounding floor is no meeting
+    at the joint: the contact it stands for lies nearby (:func:`_off_joint`).
     """
     joints = [r for r in found if _inner_joint(r)]
-    if not any(r.kind == "tangent" for r in joints):
+    if not joints:
         return found
-    out = [r for r in found if not any(r is q for q in joints)]
     floor = _pair_floor(joints[0])
+    if not any(r.kind == "tangent" or r.distance > floor for r in joints):
+        return found  # crossings right at their joints: the core's label stands
+    out = [r for r in found if not any(r is q for q in joints)]
     while joints:
         group = [q for q in joints if _same_place(joints[0], q, tol)]
         joints = [q for q in joints if not any(q is g for g in group)]
         best = min(group, key=lambda q: q.distance)
+        near = _off_joint(best, tol, floor) if best.distance > floor else None
+        if near is not None:
+            out.append(near)
+            continue
         if all(q.kind == "crossing" for q in group):
             out.extend(group)  # the later merge counts copies once (_same_place)
             continue
@@ -1001,6 +1008,119 @@ def _joint_meetings(found: list[_Raw], tol: float) -> list[_Raw]:
             decided = moved if moved is not decided or cross is False else best
         out.append(decided)
     return out
+
+
+def _off_joint(r: _Raw, tol: float, floor: float) -> _Raw | None:
+    """The contact that a meeting at an inner joint, apart by more than ``floor``, stands for; or None.
+
+    The core puts a contact within tol of a span's end on that end (its parameter exactly 0 or
+    1), but at an inner joint the edge goes on: the contact itself lies inside the next span. A
+    touch is placed where the tangents are parallel (:func:`_joint_touch`); failing that, a
+    crossing where the edges come closest (:func:`_joint_nearest`), labelled by the edges on both
+    sides of it (:func:`_joint_sides`; a near-miss, undecided there, is a touch by the rule of
+    tol). A line crossing a B-spline at 17 degrees 2e-7 of its range after a knot came back as a
+    touch at the knot, 1.5e-7 from the crossing (tol 1e-7); in space, a line touching a
+    B-spline 4e-7 of its range after a knot came back as a crossing at the knot. None when
+    neither moves: the meeting keeps the core's copies.
+    """
+    tangent = _Raw(r.ea, r.eb, r.t, r.u, r.point, "tangent", r.distance)
+    touch = _joint_touch(tangent, tol)
+    if touch is not tangent:
+        return touch
+    near = _joint_nearest(r, tol)
+    if near is r:
+        return None
+    kind = "crossing" if _joint_sides(near, floor) else "tangent"
+    return _Raw(near.ea, near.eb, near.t, near.u, near.point, kind, near.distance)
+
+
+def _joint_nearest(r: _Raw, tol: float) -> _Raw:
+    """The meeting ``r`` at a joint moved to the nearest place next to it where the edges meet, or ``r``.
+
+    Planar pairs: where ``a`` crosses to the other side of ``b`` (the sign of ``(a - b) x b' . n``,
+    ``n`` the plane's normal). Space pairs: where the edges come closest (the sign of the slope
+    ``(a - b) . a'`` of their squared distance, which shows a shallow crossing less sharply: at
+    1e-3 rad, to about 1e-10 of the range). ``b`` is taken at the foot of ``a``. The change
+    nearest the joint on either side (:func:`_nearest_change`) is taken when the edges are less
+    than a quarter as far apart there as at the joint; its kind is left to the caller.
+    """
+    if r.distance > tol:
+        return r
+    frame = r.ea.frame
+    normal = np.cross(frame[0, :3], frame[1, :3]) if frame is not None else None
+
+    def negative(t: float) -> bool:
+        pa = ocp.edge_value(r.ea.edge, t)
+        u = ocp.edge_foot(r.eb.edge, pa, r.u)[0]
+        gap = np.subtract(pa, ocp.edge_value(r.eb.edge, u))
+        if normal is None:
+            return float(gap @ ocp.edge_tangent(r.ea.edge, t)) < 0.0
+        return float(np.cross(gap, ocp.edge_tangent(r.eb.edge, u)) @ normal) < 0.0
+
+    return _nearest_change(negative, r)
+
+
+def _nearest_change(negative: Callable[[float], bool], r: _Raw) -> _Raw:
+    """``r`` moved to where ``negative`` first changes on either side of ``r.t`` along ``a``, or ``r``.
+
+    Each side's first change (:func:`_first_change`) is a candidate where the edges are less than a
+    quarter as far apart as at ``r`` (:func:`_moved_touch`). One candidate is the contact that
+    the core put on the joint. Candidates on both sides leave ``r`` as it is: the joint lies in a
+    stretch where the edges stay within tol between two contacts, which the core made one touch
+    (two circles of radius 317 that cut into each other by 3e-8 cross 7e-3 apart, on either side
+    of the joint at the seam of one).
+    """
+    moved = []
+    for sense in (-1.0, 1.0):
+        t = _first_change(negative, r, sense)
+        candidate = r if t is None else _moved_touch(r, t)
+        if candidate is not r:
+            moved.append(candidate)
+    return moved[0] if len(moved) == 1 else r
+
+
+def _first_change(negative: Callable[[float], bool], r: _Raw, sense: float) -> float | None:
+    """Where ``negative`` first differs from its value at ``r.t``, walking out along ``a`` one way.
+
+    The walk runs from 1e-9 to :data:`_JOINT_REACH` of the span in the direction ``sense``
+    (+1.0 or -1.0), doubling the step; the first step where ``negative`` has changed is bisected
+    (:func:`_bisect_sign`). None when it does not change within reach or before ``a`` ends.
+    """
+    span = _span_at(r.ea, r.t)
+    here, prev, h = negative(r.t), r.t, 1e-9 * span
+    while h <= _JOINT_REACH * span:
+        t = min(r.ea.last, max(r.ea.first, r.t + sense * h))
+        if negative(t) != here:
+            return _bisect_sign(negative, prev, t)
+        if t in (r.ea.first, r.ea.last):
+            return None
+        prev, h = t, 2.0 * h
+    return None
+
+
+def _bisect_sign(negative: Callable[[float], bool], lo: float, hi: float) -> float:
+    """A place in ``[lo, hi]`` (either order) where ``negative`` changes, to adjacent doubles (midpoint).
+
+    ``negative(lo) != negative(hi)`` is the caller's to ensure.
+    """
+    below = negative(lo)
+    for _ in range(80):  # halving 1e-3 of a span to adjacent doubles takes at most about 60 steps
+        mid = 0.5 * (lo + hi)
+        if mid in (lo, hi):
+            break
+        lo, hi = (mid, hi) if negative(mid) == below else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def _moved_touch(r: _Raw, t: float) -> _Raw:
+    """``r`` moved to ``t`` (:func:`_touch_at`) if the edges are less than a quarter as far apart there.
+
+    Not clearly closer than at the joint: the joint meets ``b`` (within rounding), ``r`` stands.
+    """
+    touch = _touch_at(r, t, r.u)
+    if not touch.distance < 0.25 * r.distance or not r.eb.first < touch.u < r.eb.last:
+        return r
+    return touch
 
 
 def _joint_sides(r: _Raw, floor: float) -> bool | None:
@@ -1054,49 +1174,43 @@ def _inner_joint(r: _Raw) -> bool:
 # a joint, below 1e-15)
 _JOINT_TOUCH_SIN = 1e-8
 
+# how far from a joint, in its span, the contact a meeting there stands for is looked for: the core's
+# reach for a meeting at a span's end (its rule of one contact, 1e-3 of a span)
+_JOINT_REACH = 1e-3
+
 
 def _joint_touch(r: _Raw, tol: float) -> _Raw:
     """A touch at an inner joint of spans, moved to where the edges' tangents are parallel.
 
     The core places a meeting at a span's end on that end, while the touch itself may lie just
     inside the next span: a quintic B-spline touches a line 7.5e-8 of its range after a knot,
-    1.2e-7 along the line, beyond tol 1e-7. Within 1e-4 of a span either side, the sign of
-    ``(a' x b') . n`` (``b`` at the foot of ``a``; ``n`` the normal of the edges' common plane)
-    is bisected down to adjacent doubles. The touch moves there when the edges are less than a
-    quarter as far apart there as at the joint: a joint that meets ``b`` (two crossings within
-    rounding either side of a touch, one at the joint: the exact arbiter's point is that one)
-    keeps it. Space pairs (no common plane) keep the joint, and so does a touch whose tangents
-    are parallel at the joint to :data:`_JOINT_TOUCH_SIN`: near a contact of order four (an
-    ellipse and its osculating circle at a vertex, a joint of the ellipse's spans) the sine stays
-    within rounding for 1e-5 of the range, and its first sign change there is rounding's.
+    1.2e-7 along the line, beyond tol 1e-7. Walking out on both sides, the first change of sign
+    of ``(a' x b') . n`` (``b`` at the foot of ``a``; ``n`` the normal of the edges' common
+    plane, or for space pairs the direction of ``a' x b'`` at the joint) is found and bisected
+    down to adjacent doubles (:func:`_nearest_change`). The touch moves there when the edges are
+    less than a quarter as far apart there as at the joint (:func:`_moved_touch`): a joint that
+    meets ``b`` (two crossings within rounding either side of a touch, one at the joint: the
+    exact arbiter's point is that one) keeps it. So does a touch whose tangents are parallel at
+    the joint to :data:`_JOINT_TOUCH_SIN`: near a contact of order four (an ellipse and its
+    osculating circle at a vertex, a joint of the ellipse's spans) the sine stays within rounding
+    for 1e-5 of the range, and its first sign change there is rounding's.
     """
-    frame = r.ea.frame
-    if frame is None or r.distance > tol:
+    if r.distance > tol:
         return r
-    normal = np.cross(frame[0, :3], frame[1, :3])
 
-    def turn(t: float) -> tuple[float, float]:  # the signed sine of b's tangent from a's, and u
+    def cross(t: float) -> np.ndarray:  # b's tangent (at the foot of a(t)) times a's, over their lengths
         u = ocp.edge_foot(r.eb.edge, ocp.edge_value(r.ea.edge, t), r.u)[0]
         da, db = np.array(ocp.edge_tangent(r.ea.edge, t)), np.array(ocp.edge_tangent(r.eb.edge, u))
         size = float(np.linalg.norm(da) * np.linalg.norm(db))
-        return (float(np.cross(da, db) @ normal) / size if size > 0.0 else 0.0), u
+        return np.cross(da, db) / size if size > 0.0 else np.zeros(3)
 
-    if abs(turn(r.t)[0]) < _JOINT_TOUCH_SIN:
+    here = cross(r.t)
+    sine = float(np.linalg.norm(here))
+    if sine < _JOINT_TOUCH_SIN:
         return r  # the tangents are parallel at the joint, within their rounding: the touch is there
-    reach = 1e-4 * _span_at(r.ea, r.t)
-    lo, hi = max(r.ea.first, r.t - reach), min(r.ea.last, r.t + reach)
-    below = turn(lo)[0] < 0.0
-    if below == (turn(hi)[0] < 0.0):
-        return r
-    for _ in range(80):  # halving 2e-4 of a span to adjacent doubles takes at most about 60 steps
-        mid = 0.5 * (lo + hi)
-        if mid in (lo, hi):
-            break
-        lo, hi = (mid, hi) if (turn(mid)[0] < 0.0) == below else (lo, mid)
-    touch = _touch_at(r, 0.5 * (lo + hi), r.u)
-    if not touch.distance < 0.25 * r.distance or not r.eb.first < touch.u < r.eb.last:
-        return r  # not clearly closer than at the joint: the joint meets b (within rounding)
-    return touch
+    frame = r.ea.frame
+    normal = np.cross(frame[0, :3], frame[1, :3]) if frame is not None else here / sine
+    return _nearest_change(lambda x: float(cross(x) @ normal) < 0.0, r)
 
 
 def _at_joint(e: _EdgeInfo, t: float) -> bool:

@@ -25,24 +25,18 @@ import pytest
 from OCP.BRep import BRep_Tool
 
 from relief_cad.cad import intersections
+from tests._exact_bspline import of_curve
 
 TOL = 1e-7
 
 
 def _gap(curve, radius: float, centre: tuple[float, float]):
     """``s -> |S(s) - centre| - radius`` for the B-spline ``curve`` (OCCT), in mpmath (40 digits)."""
-    p = curve.Degree()
-    poles = [(mp.mpf(curve.Pole(i).X()), mp.mpf(curve.Pole(i).Y())) for i in range(1, curve.NbPoles() + 1)]
-    knots = [mp.mpf(curve.Knot(i)) for i in range(1, curve.NbKnots() + 1) for _ in range(curve.Multiplicity(i))]
+    point = of_curve(curve, 2)
 
     def gap(s: mp.mpf) -> mp.mpf:
-        k = max(i for i in range(p, len(poles)) if knots[i] <= s)
-        d = [list(poles[j]) for j in range(k - p, k + 1)]
-        for r in range(1, p + 1):
-            for j in range(p, r - 1, -1):
-                a = (s - knots[j + k - p]) / (knots[j + 1 + k - r] - knots[j + k - p])
-                d[j] = [(1 - a) * d[j - 1][q] + a * d[j][q] for q in range(2)]
-        return mp.hypot(d[p][0] - centre[0], d[p][1] - centre[1]) - radius
+        x, y = point(s)
+        return mp.hypot(x - centre[0], y - centre[1]) - radius
 
     return gap
 

@@ -25,6 +25,7 @@ from OCP.gp import gp_Pnt
 
 from relief_cad.cad import intersections
 from relief_cad.cad._compat import Array1OfInteger, Array1OfPnt, Array1OfReal
+from tests._exact_bspline import de_boor
 
 TOL = 1e-7
 
@@ -45,16 +46,7 @@ def _spline(degree: int, knot: float) -> tuple[bd.Edge, list[tuple[float, float]
 def _apex(degree: int, knot: float, poles: list[tuple[float, float]]) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
     """``(s, x, y)`` of the spline's highest point, 40 digits."""
     mp.mp.dps = 40
-    ks = [mp.mpf(0)] * (degree + 1) + [mp.mpf(knot)] + [mp.mpf(1)] * (degree + 1)
-
-    def ev(s: mp.mpf) -> list[mp.mpf]:
-        k = max(i for i in range(degree, len(poles)) if ks[i] <= s)
-        d = [[mp.mpf(c) for c in poles[j]] for j in range(k - degree, k + 1)]
-        for r in range(1, degree + 1):
-            for j in range(degree, r - 1, -1):
-                a = (s - ks[j + k - degree]) / (ks[j + 1 + k - r] - ks[j + k - degree])
-                d[j] = [(1 - a) * d[j - 1][q] + a * d[j][q] for q in range(2)]
-        return d[degree]
+    ev = de_boor(poles, [0.0] * (degree + 1) + [knot] + [1.0] * (degree + 1), degree)
 
     s = mp.findroot(lambda q: mp.diff(lambda v: ev(v)[1], q), mp.mpf(0.5))
     x, y = ev(s)
