@@ -973,20 +973,20 @@ def _joint_meetings(found: list[_Raw], tol: float) -> list[_Raw]:
 
     Every span pair at a joint reports the meeting there by the core's rule for a span's end, which
     sees one span only: one pair may call it a crossing, another a touch. The copies (one place and
-    the same parameters, :func:`_same_place`) are one meeting. When one of them is a touch, the one
-    nearest the other edge is decided by the edges on both sides (:func:`_joint_sides`) and,
-    when it stays a touch, placed where it is (:func:`_joint_touch`); the rest are dropped. Where the
-    sides do not decide (:func:`_joint_sides` gives None) and no touch lies nearby, the nearest
-    copy stands as the core gave it. A cubic B-spline touching a line 2e-7 of its range after a
-    knot was a crossing at the knot. A meeting farther apart than the rounding floor is no meeting
-    at the joint: the contact it stands for lies nearby (:func:`_off_joint`).
+    the same parameters, :func:`_same_place`) are one meeting. The one nearest the other edge is
+    decided by the edges on both sides (:func:`_joint_sides`) and, when it is a touch, placed where
+    it is (:func:`_joint_touch`); the rest are dropped. Where the sides do not decide
+    (:func:`_joint_sides` gives None) and no touch lies nearby, the nearest copy stands as the
+    core gave it, and copies that are all crossings stand. A cubic B-spline touching a line 2e-7
+    of its range after a knot was a crossing at the knot; a line touching a circle 2e-7 before the
+    joint of two of its spans, where the core saw sine 2e-7, was a crossing at the joint. A
+    meeting farther apart than the rounding floor is no meeting at the joint: the contact it
+    stands for lies nearby (:func:`_off_joint`).
     """
     joints = [r for r in found if _inner_joint(r)]
     if not joints:
         return found
     floor = _pair_floor(joints[0])
-    if not any(r.kind == "tangent" or r.distance > floor for r in joints):
-        return found  # crossings right at their joints: the core's label stands
     out = [r for r in found if not any(r is q for q in joints)]
     while joints:
         group = [q for q in joints if _same_place(joints[0], q, tol)]
@@ -996,10 +996,10 @@ def _joint_meetings(found: list[_Raw], tol: float) -> list[_Raw]:
         if near is not None:
             out.append(near)
             continue
-        if all(q.kind == "crossing" for q in group):
+        cross = _joint_sides(best, floor)
+        if cross is not False and all(q.kind == "crossing" for q in group):
             out.extend(group)  # the later merge counts copies once (_same_place)
             continue
-        cross = _joint_sides(best, floor)
         kind = "crossing" if cross else "tangent"
         decided = _Raw(best.ea, best.eb, best.t, best.u, best.point, kind, best.distance)
         if not cross:

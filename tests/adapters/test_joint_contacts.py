@@ -25,7 +25,7 @@ from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge
 from OCP.Geom import Geom_BSplineCurve
 from OCP.gp import gp_Pnt
 
-from relief_cad.cad import intersections
+from relief_cad.cad import intersections, segments
 from relief_cad.cad._compat import Array1OfInteger, Array1OfPnt, Array1OfReal
 from tests._exact_bspline import de_boor
 
@@ -98,3 +98,63 @@ def test_a_crossing_near_a_knot_is_placed_on_the_crossing(space: bool, delta: fl
     assert abs(hit.t - s) <= 1e-9, (hit.t, s)
     assert abs(hit.u - 1.5) <= 1e-8, hit.u
     assert math.isfinite(hit.distance) and hit.distance <= TOL
+
+
+def _circle_case(radius: float, arc: float, theta: float, lift: float) -> tuple[bd.Edge, bd.Edge, float]:
+    """A circle, a line meeting it ``arc`` (along the circle) after the joint of its first two spans,
+    and the angle there.
+
+    The line runs along the tangent turned by ``theta`` towards the centre and by ``lift`` out of
+    the circle's plane (a space pair when ``lift`` is not 0); its start is ``1.5 radius`` back.
+    """
+    mp.mp.dps = 40
+    circle = bd.Edge.make_circle(radius)
+    joint = segments(circle)[1].t0
+    a = mp.mpf(joint) + mp.mpf(arc) / radius
+    p = [radius * mp.cos(a), radius * mp.sin(a), mp.mpf(0)]
+    t, n, z = [-mp.sin(a), mp.cos(a), 0], [-mp.cos(a), -mp.sin(a), 0], [0, 0, 1]
+    d = _unit([mp.cos(lift) * (mp.cos(theta) * x + mp.sin(theta) * y) + mp.sin(lift) * w
+               for x, y, w in zip(t, n, z, strict=True)])
+    start = [float(c - 1.5 * radius * e) for c, e in zip(p, d, strict=True)]
+    end = [float(c + 1.2 * radius * e) for c, e in zip(p, d, strict=True)]
+    knot_point = [radius * mp.cos(joint), radius * mp.sin(joint), mp.mpf(0)]
+    assert _line_distance(knot_point, p, d) <= TOL  # the case the test is about, as above
+    assert mp.sqrt(sum((x - y) ** 2 for x, y in zip(knot_point, p, strict=True))) > TOL
+    return circle, bd.Edge.make_line(start, end), float(a)
+
+
+@pytest.mark.parametrize(("radius", "arc", "theta", "lift", "kind"), [
+    (1.0, -2e-7, 0.0, 0.0, "tangent"), (1.0, -1.3e-7, 0.0, 0.0, "tangent"), (4.0, 3e-7, 0.0, 0.0, "tangent"),
+    (1.0, 2e-7, 0.3, 0.0, "crossing"),
+    (40.0, -2e-7, 0.3, 0.0, "crossing"), (1.0, -2e-7, 0.0, 0.4, "crossing"), (1.0, 1.5e-7, 0.3, 0.5, "crossing")])
+def test_a_contact_near_a_circle_joint_is_placed_on_it(radius: float, arc: float, theta: float, lift: float,
+                                                       kind: str) -> None:
+    """A line along the tangent lifted out of the circle's plane meets it at the lift's angle: a crossing."""
+    circle, line, a = _circle_case(radius, arc, theta, lift)
+    [hit] = [r for r in intersections(circle, line, tol=TOL) if abs(r.t - a) < 1e-2]
+    assert hit.kind == kind
+    assert abs(hit.t - a) * radius <= 1e-9, (hit.t, a)
+    assert abs(hit.u - 1.5 * radius) <= 1e-8 * radius, hit.u
+    assert math.isfinite(hit.distance) and hit.distance <= TOL
+
+
+@pytest.mark.parametrize("tilted", [False, True])
+def test_a_touch_the_core_calls_a_crossing_at_a_circle_joint(tilted: bool) -> None:
+    """A line touching a unit circle 2e-7 before the joint at 90 degrees, its ends computed in doubles.
+
+    The joint is 2e-14 from the line, within the rounding floor: the core saw sine 2e-7 there and
+    called both copies crossings; the edges on both sides of the joint show a touch.
+    """
+    a = math.pi / 2 - 2e-7
+    p = (math.cos(a), math.sin(a), 0.0)
+    d = (-math.sin(a), math.cos(a), 0.0)
+    line = bd.Edge.make_line(tuple(c - 1.5 * e for c, e in zip(p, d, strict=True)),
+                             tuple(c + 1.2 * e for c, e in zip(p, d, strict=True)))
+    circle = bd.Edge.make_circle(1.0)
+    if tilted:
+        place = bd.Location((3.0, -2.0, 1.5), (1, 2, 3), 37)
+        circle, line = circle.moved(place), line.moved(place)
+    [hit] = [r for r in intersections(circle, line, tol=TOL) if abs(r.t - a) < 1e-2]
+    assert hit.kind == "tangent"
+    assert abs(hit.t - a) <= 1e-9, (hit.t, a)
+    assert abs(hit.u - 1.5) <= 1e-8, hit.u
