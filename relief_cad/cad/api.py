@@ -992,9 +992,14 @@ def _joint_meetings(found: list[_Raw], tol: float) -> list[_Raw]:
         group = [q for q in joints if _same_place(joints[0], q, tol)]
         joints = [q for q in joints if not any(q is g for g in group)]
         best = min(group, key=lambda q: q.distance)
-        near = _off_joint(best, tol, floor) if best.distance > floor else None
-        if near is not None:
-            out.append(near)
+        if best.distance > floor:  # no meeting at the joint: a contact next to it, or the core's copies
+            near = _off_joint(best, tol, floor)
+            if near is not None:
+                out.append(near)
+            elif all(q.kind == "crossing" for q in group):
+                out.extend(group)
+            else:
+                out.append(best)  # _off_joint found no touch to place: the nearest copy as the core gave it
             continue
         cross = _joint_sides(best, floor)
         if cross is not False and all(q.kind == "crossing" for q in group):
@@ -1142,7 +1147,7 @@ def _joint_sides(r: _Raw, floor: float) -> bool | None:
     span, sides = _span_at(r.ea, r.t), []
     for sense in (-1.0, 1.0):
         h, off = 1e-9 * span, None
-        while off is None and h <= 1e-3 * span:
+        while off is None and h <= _JOINT_REACH * span:
             t = r.t + sense * h
             if not r.ea.first <= t <= r.ea.last:
                 return None
