@@ -167,7 +167,8 @@ class _EdgeInfo:
     _curves2d: dict[int, RationalBezier] | None = None
     _packed: _Packed | None = None  # see _planar_arrays
     _vertices: tuple[Any, Any] | None = None
-    _marks: list[tuple[Any, tuple[float, float, float], float]] | None = None
+    _marks: list[tuple[Any, tuple[float, float, float]]] | None = None
+    _vertex_tols: list[float] | None = None
     _stalls: tuple[float, list[bool], list[tuple[float, float]]] | None = None  # see _stalls
     copy_of: int | None = None  # the index of an earlier edge of the same curve (see _mark_copies)
 
@@ -179,12 +180,23 @@ class _EdgeInfo:
         return self._vertices
 
     @property
-    def vertex_marks(self) -> list[tuple[Any, tuple[float, float, float], float]]:
-        """``(vertex, point, tolerance)`` of the first and last vertex (null ones left out), on demand."""
+    def vertex_marks(self) -> list[tuple[Any, tuple[float, float, float]]]:
+        """``(vertex, point)`` of the first and last vertex (null ones left out), on demand."""
         if self._marks is None:
-            self._marks = [(v, BRep_Tool.Pnt_s(v).Coord(), BRep_Tool.Tolerance_s(v))
-                           for v in self.vertices if not v.IsNull()]
+            self._marks = [(v, BRep_Tool.Pnt_s(v).Coord()) for v in self.vertices if not v.IsNull()]
         return self._marks
+
+    @property
+    def vertex_tolerances(self) -> list[float]:
+        """The tolerances of the vertices of :attr:`vertex_marks`, in their order, on demand.
+
+        Apart from the points: a contact at a shared vertex is nearly always within the model
+        tolerance of its point, and OCCT's ``BRep_Tool.Tolerance_s`` of a vertex costs more than
+        the point.
+        """
+        if self._vertex_tols is None:
+            self._vertex_tols = [BRep_Tool.Tolerance_s(v) for v, _ in self.vertex_marks]
+        return self._vertex_tols
 
 
 def _prepare(shape: Any, name: str) -> list[_EdgeInfo]:
@@ -1329,10 +1341,12 @@ def _shared_vertex_contact(r: _Raw, tol: float) -> bool:
 
     The contact must lie within tol (or the vertex's own tolerance) of a vertex of ``a`` that is
     also one of ``b``'s; the distance, on cached floats, is tested first: most crossings are far
-    from every vertex, and are told so without a call into OCCT.
+    from every vertex, and are told so without a call into OCCT. The vertex's tolerance is read
+    only for a contact farther than tol from its point.
     """
-    for va, p, vtol in r.ea.vertex_marks:
-        if math.dist(p, r.point) <= max(tol, vtol) and any(va.IsSame(vb) for vb, _, _ in r.eb.vertex_marks):
+    for k, (va, p) in enumerate(r.ea.vertex_marks):
+        d = math.dist(p, r.point)
+        if (d <= tol or d <= r.ea.vertex_tolerances[k]) and any(va.IsSame(vb) for vb, _ in r.eb.vertex_marks):
             return True
     return False
 
