@@ -169,6 +169,7 @@ class _EdgeInfo:
     _vertices: tuple[Any, Any] | None = None
     _marks: list[tuple[Any, tuple[float, float, float]]] | None = None
     _vertex_tols: list[float] | None = None
+    _adaptor: Any = None  # BRepAdaptor_Curve, see adaptor
     _stalls: tuple[float, list[bool], list[tuple[float, float]]] | None = None  # see _stalls
     copy_of: int | None = None  # the index of an earlier edge of the same curve (see _mark_copies)
 
@@ -178,6 +179,13 @@ class _EdgeInfo:
         if self._vertices is None:
             self._vertices = (TopExp.FirstVertex_s(self.edge), TopExp.LastVertex_s(self.edge))
         return self._vertices
+
+    @property
+    def adaptor(self) -> Any:
+        """The edge's ``BRepAdaptor_Curve`` (global coordinates), made on first use (``ocp.curve_*``)."""
+        if self._adaptor is None:
+            self._adaptor = ocp.edge_adaptor(self.edge)
+        return self._adaptor
 
     @property
     def vertex_marks(self) -> list[tuple[Any, tuple[float, float, float]]]:
@@ -488,7 +496,7 @@ def _stall_passage(e: _EdgeInfo, t: float, u: float, point: _Point3, tol: float)
         if hi < a or lo > b:
             continue
         outside = [(s0, s1) for s0, s1 in ((lo, a), (b, hi)) if s0 < s1]
-        if all(math.dist(ocp.edge_value(e.edge, s0 + f * (s1 - s0)), point) <= tol
+        if all(math.dist(ocp.curve_value(e.adaptor, s0 + f * (s1 - s0)), point) <= tol
                for s0, s1 in outside for f in (0.0, 0.25, 0.5, 0.75, 1.0)):
             return True
     return False
@@ -878,8 +886,8 @@ def _continues(prev: _Raw, r: _Raw, tol: float, ptol: float) -> bool:
         prev.u[1], r.u[0], eb, ptol
     ):
         return True
-    return _near(ocp.edge_value(ea.edge, prev.t[1]), ocp.edge_value(ea.edge, r.t[0]), tol) and _near(
-        ocp.edge_value(eb.edge, prev.u[1]), ocp.edge_value(eb.edge, r.u[0]), tol)
+    return _near(ocp.curve_value(ea.adaptor, prev.t[1]), ocp.curve_value(ea.adaptor, r.t[0]), tol) and _near(
+        ocp.curve_value(eb.adaptor, prev.u[1]), ocp.curve_value(eb.adaptor, r.u[0]), tol)
 
 
 def _join_stretches(points: list[_Raw], crossings: list[int]) -> tuple[list[_Raw], list[int]]:
@@ -934,11 +942,11 @@ def _midway(p: _Raw, q: _Raw) -> _Raw:
 def _touch_at(r: _Raw, t: float, u: float) -> _Raw:
     """A touch of ``r``'s edges at ``t`` on ``a``: its ``u`` the foot on ``b`` near ``u``, its point halfway.
 
-    The foot is :func:`~relief_cad.cad.ocp.edge_foot`; the distance is the one to it.
+    The foot is :func:`~relief_cad.cad.ocp.curve_foot`; the distance is the one to it.
     """
-    a = ocp.edge_value(r.ea.edge, t)
-    u, dist = ocp.edge_foot(r.eb.edge, a, u)
-    b = ocp.edge_value(r.eb.edge, u)
+    a = ocp.curve_value(r.ea.adaptor, t)
+    u, dist = ocp.curve_foot(r.eb.adaptor, a, u)
+    b = ocp.curve_value(r.eb.adaptor, u)
     point = (0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2]))
     return _Raw(r.ea, r.eb, t, u, point, "tangent", dist)
 
@@ -1067,12 +1075,12 @@ def _joint_nearest(r: _Raw, tol: float) -> _Raw:
     normal = np.cross(frame[0, :3], frame[1, :3]) if frame is not None else None
 
     def negative(t: float) -> bool:
-        pa = ocp.edge_value(r.ea.edge, t)
-        u = ocp.edge_foot(r.eb.edge, pa, r.u)[0]
-        gap = np.subtract(pa, ocp.edge_value(r.eb.edge, u))
+        pa = ocp.curve_value(r.ea.adaptor, t)
+        u = ocp.curve_foot(r.eb.adaptor, pa, r.u)[0]
+        gap = np.subtract(pa, ocp.curve_value(r.eb.adaptor, u))
         if normal is None:
-            return float(gap @ ocp.edge_tangent(r.ea.edge, t)) < 0.0
-        return float(np.cross(gap, ocp.edge_tangent(r.eb.edge, u)) @ normal) < 0.0
+            return float(gap @ ocp.curve_tangent(r.ea.adaptor, t)) < 0.0
+        return float(np.cross(gap, ocp.curve_tangent(r.eb.adaptor, u)) @ normal) < 0.0
 
     return _nearest_change(negative, r)
 
@@ -1163,11 +1171,11 @@ def _joint_sides(r: _Raw, floor: float) -> bool | None:
             t = r.t + sense * h
             if not r.ea.first <= t <= r.ea.last:
                 return None
-            pa = ocp.edge_value(r.ea.edge, t)
-            fu = ocp.edge_foot(r.eb.edge, pa, r.u)[0]
+            pa = ocp.curve_value(r.ea.adaptor, t)
+            fu = ocp.curve_foot(r.eb.adaptor, pa, r.u)[0]
             if not r.eb.first < fu < r.eb.last:
                 return None  # b ends there: no foot across from a
-            a, foot = np.array(pa), np.array(ocp.edge_value(r.eb.edge, fu))
+            a, foot = np.array(pa), np.array(ocp.curve_value(r.eb.adaptor, fu))
             off = a - foot if math.dist(pa, foot) > floor else None
             h *= 2.0
         if off is None:
@@ -1216,8 +1224,8 @@ def _joint_touch(r: _Raw, tol: float) -> _Raw:
         return r
 
     def cross(t: float) -> np.ndarray:  # b's tangent (at the foot of a(t)) times a's, over their lengths
-        u = ocp.edge_foot(r.eb.edge, ocp.edge_value(r.ea.edge, t), r.u)[0]
-        da, db = np.array(ocp.edge_tangent(r.ea.edge, t)), np.array(ocp.edge_tangent(r.eb.edge, u))
+        u = ocp.curve_foot(r.eb.adaptor, ocp.curve_value(r.ea.adaptor, t), r.u)[0]
+        da, db = np.array(ocp.curve_tangent(r.ea.adaptor, t)), np.array(ocp.curve_tangent(r.eb.adaptor, u))
         size = float(np.linalg.norm(da) * np.linalg.norm(db))
         return np.cross(da, db) / size if size > 0.0 else np.zeros(3)
 
@@ -1266,13 +1274,13 @@ def _stretch_within(p: _Raw, q: _Raw, tol: float) -> bool:
 
     Seven samples of ``a`` evenly between them, the middle first (most pairs of crossings are far
     apart, and fail there), each against its foot on ``b`` near the matching fraction of ``b``'s
-    step (:func:`~relief_cad.cad.ocp.edge_foot`). Matching fractions alone are off by the
+    step (:func:`~relief_cad.cad.ocp.curve_foot`). Matching fractions alone are off by the
     difference of the parameterisations: over the 1.1e-3 between the two crossings that rounding
     makes of an ellipse touching its osculating circle, 1e-6, far above the 1e-13 of rounding.
     """
     for f in (0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875):
-        a = ocp.edge_value(p.ea.edge, p.t + f * (q.t - p.t))
-        if ocp.edge_foot(p.eb.edge, a, p.u + f * (q.u - p.u))[1] > tol:
+        a = ocp.curve_value(p.ea.adaptor, p.t + f * (q.t - p.t))
+        if ocp.curve_foot(p.eb.adaptor, a, p.u + f * (q.u - p.u))[1] > tol:
             return False
     return True
 
@@ -1325,7 +1333,7 @@ def _inside(o: _Raw, r: _Raw, tol: float) -> bool:
     """
     if _in_ranges(o, r.t, r.u) or (o.ea is o.eb and _in_ranges(o, r.u, r.t)):
         return True
-    ends = [ocp.edge_value(o.ea.edge, o.t[0]), ocp.edge_value(o.ea.edge, o.t[1])]
+    ends = [ocp.curve_value(o.ea.adaptor, o.t[0]), ocp.curve_value(o.ea.adaptor, o.t[1])]
     return any(_near(e, r.point, tol) for e in ends)
 
 
@@ -1608,7 +1616,7 @@ def intersect(a: Any, b: Any = None, *, tol: float | None = None) -> Any:
     points: list[tuple[float, float, float]] = []
     for r in sorted(raws, key=lambda r: (r.ea.index, r.eb.index, r.t if r.kind != "overlap" else r.t[0])):
         if r.kind == "overlap":
-            cands = [ocp.edge_value(r.ea.edge, r.t[0]), ocp.edge_value(r.ea.edge, r.t[1])]
+            cands = [ocp.curve_value(r.ea.adaptor, r.t[0]), ocp.curve_value(r.ea.adaptor, r.t[1])]
         else:
             cands = [r.point]
         for p in cands:
