@@ -813,8 +813,11 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
     """Merge overlaps, drop points inside overlaps, duplicates and trivial contacts of one edge pair."""
     if not raws:
         return raws
-    if len(raws) == 1 and not same and not self_mode and raws[0].kind != "overlap":
-        return raws  # a single point of two distinct edges: nothing to merge or drop
+    if len(raws) == 1 and not same and raws[0].kind != "overlap":
+        if not self_mode:
+            return raws  # a single point of two distinct edges: nothing to merge or drop
+        if not _inner_joint(raws[0]) and _shared_vertex_contact(raws[0], tol):
+            return []  # the one contact of two edges is the vertex they share (the loop below drops it)
     ea, eb = raws[0].ea, raws[0].eb
     ptol = 1e-9
     overlaps = sorted((r for r in raws if r.kind == "overlap"), key=lambda r: r.t[0])
@@ -1245,6 +1248,8 @@ def _at_joint(e: _EdgeInfo, t: float) -> bool:
     on the flank of a crossing a span away (a nearly straight spline 8e-8 off a line at a knot,
     0.16 of a span from where it crosses at sin 1e-7) it is no contact.
     """
+    if len(e.segs) < 2:
+        return False  # one span: no joint (most edges of a sketch: lines and arcs)
     span = max(1.0, abs(e.last - e.first))
     return any(abs(t - s.t0) <= 1e-12 * span for s in e.segs[1:])
 

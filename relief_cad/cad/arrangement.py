@@ -224,7 +224,7 @@ def _vertices(graph: _Graph, values: _Values) -> tuple[np.ndarray, list[Any], np
         # the measured error, rounded up by a relative 1e-9 and the rounding floor of the coordinates,
         # so that OCCT's own re-measuring passes: it evaluates the curves its way, ulps apart (an error
         # of 2.5e-7 at coordinates of 4,600 was 2.5e-16 over OCCT's distance, 1e-12 an ulp there)
-        rounding = floor_of_magnitude(max(abs(c) for c in centre))
+        rounding = floor_of_magnitude(max(abs(centre[0]), abs(centre[1]), abs(centre[2])))
         builder.MakeVertex(v, gp_Pnt(*centre), max(floor, error * (1.0 + 1e-9) + rounding))
         vertices.append(v)
     return labels, vertices, centres
