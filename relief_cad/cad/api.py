@@ -1354,11 +1354,13 @@ def _shared_vertex_contact(r: _Raw, tol: float) -> bool:
 
     The contact must lie within tol (or the vertex's own tolerance) of a vertex of ``a`` that is
     also one of ``b``'s; the distance, on cached floats, is tested first: most crossings are far
-    from every vertex, and are told so without a call into OCCT. The vertex's tolerance is read
-    only for a contact farther than tol from its point.
+    from every vertex, and are told so without a call into OCCT. The vertices within tol are
+    tried first: a contact at the vertex two edges share nearly always lies within tol of its
+    point, and is told so without reading any vertex's tolerance (the dearest call); the others'
+    tolerances are read only when none of those is shared.
     """
-    for k, (va, p) in enumerate(r.ea.vertex_marks):
-        d = math.dist(p, r.point)
+    marks = [(k, va, math.dist(p, r.point)) for k, (va, p) in enumerate(r.ea.vertex_marks)]
+    for k, va, d in sorted(marks, key=lambda m: m[2] > tol):  # within tol first, in order
         if (d <= tol or d <= r.ea.vertex_tolerances[k]) and any(va.IsSame(vb) for vb, _ in r.eb.vertex_marks):
             return True
     return False
