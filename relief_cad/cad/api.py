@@ -813,11 +813,8 @@ def _clean_pair(raws: list[_Raw], same: bool, self_mode: bool, tol: float) -> li
     """Merge overlaps, drop points inside overlaps, duplicates and trivial contacts of one edge pair."""
     if not raws:
         return raws
-    if len(raws) == 1 and not same and raws[0].kind != "overlap":
-        if not self_mode:
-            return raws  # a single point of two distinct edges: nothing to merge or drop
-        if not _inner_joint(raws[0]) and _shared_vertex_contact(raws[0], tol):
-            return []  # the one contact of two edges is the vertex they share (the loop below drops it)
+    if len(raws) == 1 and not same and not self_mode and raws[0].kind != "overlap":
+        return raws  # a single point of two distinct edges: nothing to merge or drop
     ea, eb = raws[0].ea, raws[0].eb
     ptol = 1e-9
     overlaps = sorted((r for r in raws if r.kind == "overlap"), key=lambda r: r.t[0])
@@ -1353,11 +1350,10 @@ def _shared_vertex_contact(r: _Raw, tol: float) -> bool:
     """True for the contact at a vertex joining two distinct edges (self-intersection mode).
 
     The contact must lie within tol (or the vertex's own tolerance) of a vertex of ``a`` that is
-    also one of ``b``'s; the distance, on cached floats, is tested first: most crossings are far
-    from every vertex, and are told so without a call into OCCT. The vertices within tol are
-    tried first: a contact at the vertex two edges share nearly always lies within tol of its
-    point, and is told so without reading any vertex's tolerance (the dearest call); the others'
-    tolerances are read only when none of those is shared.
+    also one of ``b``'s. The distances, on cached floats, come first, and the vertices within tol
+    are tried first: a contact at the vertex two edges share nearly always lies within tol of its
+    point, and is told so without reading any vertex's tolerance (the dearest OCCT call). The
+    other vertices' tolerances are read (once per edge) only when none of those is shared.
     """
     marks = [(k, va, math.dist(p, r.point)) for k, (va, p) in enumerate(r.ea.vertex_marks)]
     for k, va, d in sorted(marks, key=lambda m: m[2] > tol):  # within tol first, in order
