@@ -11,6 +11,7 @@ from __future__ import annotations
 import os
 import tempfile
 
+import numpy
 from Cython.Build import cythonize
 from Cython.Compiler import Options
 from setuptools import Extension, setup
@@ -43,9 +44,16 @@ DIRECTIVES = {
 # 2 dimensions
 Options.buffer_max_dims = 3
 
+# the modules that make numpy arrays through numpy's C API (built against numpy 2 headers, which
+# run on numpy 1.x too: NumPy's default target API is older than the oldest numpy we accept)
+NUMPY_C_API = ("rows",)
+
 extensions = [
     Extension(f"relief_cad._kernels.{name}", [f"relief_cad/_kernels/{name}.py"],
-              extra_compile_args=CFLAGS, extra_link_args=LDFLAGS)
+              extra_compile_args=CFLAGS, extra_link_args=LDFLAGS,
+              **({"include_dirs": [numpy.get_include()],
+                  "define_macros": [("NPY_NO_DEPRECATED_API", "NPY_1_7_API_VERSION")]}
+                 if name in NUMPY_C_API else {}))
     for name in MODULES
 ]
 

@@ -53,7 +53,7 @@ class Intersection:
         Parameter on the second curve (for self-intersections, ``t < u``).
     point : ndarray, shape (d,)
         The intersection point in model units (the mean of ``a(t)`` and ``b(u)``); read-only
-        in the results of the intersectors (a view of the kernel's output).
+        in the results of the intersectors (each point its own array).
     kind : {"crossing", "tangent"}
         ``"crossing"`` for a transversal meeting, ``"tangent"`` for a tangent
         contact or a near-miss closer than the tolerance.

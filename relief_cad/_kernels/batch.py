@@ -21,6 +21,7 @@ from .rows import rows_to_list
 _K_UNRESOLVED = cython.declare(cython.double, KIND_UNRESOLVED)  # a C copy for the loops
 _NO_ROWS = np.empty((0, RES_COLS))
 _NO_ROWS.flags.writeable = False
+_NO_ROWS_VIEW = cython.declare(cython.const[cython.double][:, :], _NO_ROWS)  # a typed view kept for C calls
 
 
 @cython.cfunc
@@ -220,6 +221,7 @@ def intersect_one_kernel(
     tol: cython.double,
     budget: cython.longlong,
     ends_lim: cython.double = -1.0,
+    listed: cython.bint = False,
 ):
     """One pair: its result rows, a new array (a single array return is cheaper to box than a tuple).
 
@@ -228,13 +230,15 @@ def intersect_one_kernel(
     curves that may coincide all along, which the caller tests first) returns None, unsolved.
     The pair kernel runs without the GIL in a scratch buffer kept for the next call: its first
     rows, then room for result rows; rows that do not fit there go to a larger array, and the pair
-    runs again (the same bits).
+    runs again (the same bits). With ``listed``, the return is ``rows_to_list(rows, tol)``
+    instead (:func:`planar_pair`'s path), made from the rows where the kernel wrote them: no copy
+    of them, no new view.
     """
     global _spare
     if ends_lim >= 0.0 and _ends_match(PA, PB, ends_lim):
         return None
     if _apart(PA, PB, tol):
-        return _NO_ROWS
+        return rows_to_list(_NO_ROWS_VIEW, tol) if listed else _NO_ROWS
     rows: cython.Py_ssize_t = scratch_rows(PA.shape[0], PB.shape[0])
     spare = _spare
     _spare = None
@@ -255,6 +259,8 @@ def intersect_one_kernel(
                 break
             res = np.empty((-2 - n, RES_COLS))
             rv = res
+        if listed:
+            return rows_to_list(rv[:n], tol)
         if n == 0:
             return _NO_ROWS
         return np.array(buf[rows : rows + n]) if res is None else res[:n]
@@ -288,10 +294,8 @@ def planar_pair(a, b, tol: cython.double, budget: cython.longlong, ends: cython.
     PB: cython.const[cython.double][:, :] = kb[0]
     if PA.shape[1] != 2 or PB.shape[1] != 2:
         return None
-    rows = intersect_one_kernel(PA, ka[1], PB, kb[1], tol, budget, 2.0 * tol if ends else -1.0)
-    if rows is None:
-        return False
-    return rows_to_list(rows, tol)
+    got = intersect_one_kernel(PA, ka[1], PB, kb[1], tol, budget, 2.0 * tol if ends else -1.0, True)
+    return False if got is None else got
 
 
 def pack_pairs(pairs: list, cls: type, lim: cython.double):

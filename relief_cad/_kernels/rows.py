@@ -6,9 +6,10 @@ distance]`` (``RES_COLS``), the space kernel ``[kind, t, u, t1, u1, x, y, z, dis
 run up to column 8. This module turns them into :class:`~relief_cad.results.Intersection`,
 :class:`~relief_cad.results.Overlap` and :class:`~relief_cad.results.ParameterBox` objects.
 
-It is compiled like the kernels (the loop over rows is the hot part of every small call: about
-a third of a microsecond per point here against twice that as plain Python), but it holds the
-GIL throughout and knows no kernel: it reads the rows and calls the result classes.
+It is compiled like the kernels (the loop over rows is the hot part of every small call), but it
+holds the GIL throughout and knows no kernel: it reads the rows and calls the result classes.
+Compiled, a point's array is made through numpy's C API (:func:`_coords`: about 0.2 us, against
+1.3 us for numpy's Python calls that view a row and make it read-only).
 
 >>> import numpy as np
 >>> rows = np.array([[0.0, 0.0, 0.5, 0.25, 0.5, 0.25, 1.0, 2.0, 0.0]])
@@ -20,6 +21,22 @@ GIL throughout and knows no kernel: it reads the rows and calls the result class
 from __future__ import annotations
 
 import cython
+
+if cython.compiled:
+    from cython.cimports.numpy import (
+        NPY_ARRAY_WRITEABLE,
+        NPY_DOUBLE,
+        PyArray_CLEARFLAGS,
+        PyArray_DATA,
+        PyArray_SimpleNew,
+        import_array,
+        ndarray,
+        npy_intp,
+    )
+
+    import_array()
+else:
+    import numpy as np
 
 from ..results import Intersection, IntersectionList, Overlap, ParameterBox, Result
 from .constants import KIND_CROSSING, KIND_OVERLAP, KIND_TANGENT
@@ -35,10 +52,10 @@ def distribute(rows, items: list, boxes: list, planar: cython.bint, looks: list 
 
     ``rows`` (r, 9) float64: planar rows (``planar`` True; column 0 indexes ``items`` and
     ``boxes``, lists of lists) or space rows of one pair (``planar`` False; ``items[0]`` and
-    ``boxes[0]`` take them). ``rows`` must be the caller's own new array: a point's coordinates
-    are a read-only view of it (no copy per point). The objects are built without the frozen
-    dataclasses' ``__init__`` (three guarded ``setattr`` each): their ``__dict__`` is filled
-    with the same fields, so they compare, hash and print as if built by hand.
+    ``boxes[0]`` take them). A point's coordinates are its own new read-only array
+    (:func:`_coords`). The objects are built without the frozen dataclasses' ``__init__``
+    (three guarded ``setattr`` each): their ``__dict__`` is filled with the same fields, so they
+    compare, hash and print as if built by hand.
 
     ``looks`` (a list, or None) gets the index of each pair with a row that
     :func:`relief_cad.contacts.needs_refining` may not pass as it is, once: a box, a contact that
@@ -52,21 +69,33 @@ def distribute(rows, items: list, boxes: list, planar: cython.bint, looks: list 
     ([Overlap(t=(0.1, 0.3), u=(0.2, 0.4), kind='overlap')],
      [ParameterBox(t0=0.0, t1=1.0, u0=0.0, u1=1.0)], [1])
     """
-    # (run as plain Python, the rows are read as Python floats, as compiled: not numpy scalars)
-    R: cython.const[cython.double][:, :] = rows if cython.compiled else rows.astype(object)
+    _fill(_readable(rows), items, boxes, planar, looks)
+
+
+@cython.cfunc
+def _readable(rows: object) -> object:
+    """``rows`` as the row loops read them: as given compiled; uncompiled, as Python floats (not numpy's)."""
+    return rows if cython.compiled else rows.astype(object)
+
+
+@cython.cfunc
+def _fill(R: cython.const[cython.double][:, :], items: list, boxes: list, planar: cython.bint,
+          looks: object) -> cython.void:
+    """:func:`distribute`'s loop on a typed view of the rows (C callers pass theirs: no new view).
+
+    ``looks``: a list or None.
+    """
     i: cython.Py_ssize_t
     c: cython.Py_ssize_t = 1 if planar else 0  # the kind's column
     k: cython.Py_ssize_t = 0
     last: cython.Py_ssize_t = -1  # the last pair put in looks
     kind: cython.int
-    points = rows[:, c + 5 : 8]  # a view of ``rows``, read-only (the view only)
-    points.setflags(write=False)
     for i in range(R.shape[0]):
         if planar:
             k = cython.cast(cython.Py_ssize_t, R[i, 0])
         kind = cython.cast(cython.int, R[i, c])
         if kind == _CROSSING or kind == _TANGENT:
-            cython.cast(list, items[k]).append(_point(R[i, c + 1], R[i, c + 2], points[i],
+            cython.cast(list, items[k]).append(_point(R[i, c + 1], R[i, c + 2], _coords(R, i, c + 5),
                                                       _KIND_NAMES[kind], R[i, 8]))
         elif kind == _OVERLAP:
             cython.cast(list, items[k]).append(_overlap((R[i, c + 1], R[i, c + 3]),
@@ -75,7 +104,7 @@ def distribute(rows, items: list, boxes: list, planar: cython.bint, looks: list 
             cython.cast(list, boxes[k]).append(_box(R[i, c + 1], R[i, c + 3], R[i, c + 2], R[i, c + 4]))
         if looks is not None and k != last and not (
                 kind == _CROSSING and _inner(R[i, c + 1]) and _inner(R[i, c + 2])):
-            looks.append(k)
+            cython.cast(list, looks).append(k)
             last = k
 
 
@@ -84,6 +113,24 @@ def distribute(rows, items: list, boxes: list, planar: cython.bint, looks: list 
 def _inner(x: cython.double) -> cython.bint:
     """True when a parameter is not an end (0 or 1) of its curve."""
     return x != 0.0 and x != 1.0
+
+
+@cython.cfunc
+def _coords(R: cython.const[cython.double][:, :], i: cython.Py_ssize_t,
+            first: cython.Py_ssize_t) -> object:
+    """Columns ``first`` to 7 of row ``i`` of ``R``: a point, as a new read-only float64 array."""
+    if not cython.compiled:  # plain Python: numpy's own calls
+        a = np.array(R[i, first:8], dtype=np.float64)
+        a.flags.writeable = False
+        return a
+    n: npy_intp = 8 - first
+    out: ndarray = PyArray_SimpleNew(1, cython.address(n), NPY_DOUBLE)
+    p: cython.p_double = cython.cast(cython.p_double, PyArray_DATA(out))
+    j: cython.Py_ssize_t
+    for j in range(n):
+        p[j] = R[i, first + j]
+    PyArray_CLEARFLAGS(out, NPY_ARRAY_WRITEABLE)
+    return out
 
 
 @cython.cfunc
@@ -123,14 +170,16 @@ def _box(t0: cython.double, t1: cython.double, u0: cython.double, u1: cython.dou
     return obj
 
 
-def rows_to_list(rows, tol: cython.double) -> tuple[IntersectionList, bool]:
-    """``(results, final)``: the :class:`IntersectionList` of one planar pair's rows, and whether it is final.
+def rows_to_list(rows: cython.const[cython.double][:, :],
+                 tol: cython.double) -> tuple[IntersectionList, bool]:
+    """``(results, final)``: the :class:`IntersectionList` of one planar pair's rows; whether it is final.
 
     ``tol_used`` is ``tol``. The kernel gives a pair's points and overlaps in the order of their
     ``t`` (a point's ``t``, an overlap's first ``t``; stable), then its unresolved boxes: the
     order of the list. ``final`` is True when no row needs a look (see :func:`distribute`): no
-    box is open and :func:`relief_cad.contacts.needs_refining` would pass it. ``rows`` must be
-    the caller's own new array (see :func:`distribute`).
+    box is open and :func:`relief_cad.contacts.needs_refining` would pass it. Compiled,
+    :func:`relief_cad._kernels.batch.planar_pair` calls it as a C function on the kernel's
+    scratch rows (a typed view: no copy of the rows, no new view of them).
 
     >>> import numpy as np
     >>> res, final = rows_to_list(np.empty((0, 9)), 1e-9)
@@ -144,7 +193,10 @@ def rows_to_list(rows, tol: cython.double) -> tuple[IntersectionList, bool]:
         return out, True
     boxes: list = []
     looks: list = []
-    distribute(rows, [out], [boxes], True, looks)
+    if cython.compiled:
+        _fill(rows, [out], [boxes], True, looks)  # the view as it came: no new one
+    else:
+        _fill(_readable(rows), [out], [boxes], True, looks)
     if boxes:
         out.unresolved = tuple(boxes)
     return out, not looks
@@ -155,7 +207,7 @@ def batch_lists(rows, tols) -> tuple[list[IntersectionList], list[int]]:
 
     ``tols`` (p,) float64 holds each pair's tolerance (its list's ``tol_used``); column 0 of
     ``rows`` indexes it. ``looks`` lists the pairs that need a look (see :func:`distribute`),
-    in order; the other lists are final. ``rows`` must be the caller's own new array.
+    in order; the other lists are final.
 
     >>> import numpy as np
     >>> lists, looks = batch_lists(np.array([[1.0, 0.0, 0.5, 0.5, 0.5, 0.5, 1.0, 1.0, 0.0]]),
@@ -175,7 +227,7 @@ def batch_lists(rows, tols) -> tuple[list[IntersectionList], list[int]]:
         lists.append(out)
         boxes.append([])
     looks: list = []
-    distribute(rows, lists, boxes, True, looks)
+    _fill(_readable(rows), lists, boxes, True, looks)
     for j in looks:
         if boxes[j]:
             lists[j].unresolved = tuple(boxes[j])
@@ -192,5 +244,5 @@ def space_results(rows) -> tuple[list[Result], list[ParameterBox]]:
     """
     items: list = []
     boxes: list = []
-    distribute(rows, [items], [boxes], False)
+    _fill(_readable(rows), [items], [boxes], False, None)
     return items, boxes
