@@ -33,9 +33,14 @@ def _power(coef: list[float]) -> np.ndarray:
 
 
 def _roots_in(poly: np.ndarray, lo: float, hi: float) -> list[float]:
-    """Real roots of ``poly`` in ``(lo, hi)``: the companion matrix's, then Newton-polished (simple roots)."""
+    """Real roots of ``poly`` in ``(lo, hi)``: the companion matrix's, then Newton-polished (simple roots).
+
+    Several eigenvalues may polish onto one root (numpy 1.26's LAPACK gave a double root as a
+    complex pair 4e-8 off the axis, and Newton took both from there to a simple root already
+    found): a root within 1e-9 of one already taken is that one.
+    """
     der = P.polyder(poly)
-    out = []
+    out: list[float] = []
     for r in P.polyroots(poly):
         if abs(r.imag) < 1e-6:
             x = float(r.real)
@@ -44,7 +49,7 @@ def _roots_in(poly: np.ndarray, lo: float, hi: float) -> list[float]:
                 if slope == 0.0:
                     break
                 x -= float(P.polyval(x, poly)) / slope
-            if lo < x < hi:
+            if lo < x < hi and all(abs(x - y) > 1e-9 for y in out):
                 out.append(x)
     return sorted(out)
 
