@@ -23,6 +23,7 @@ from __future__ import annotations
 import cython
 
 if cython.compiled:
+    from cython.cimports.cpython.object import PyObject_GenericSetAttr as _store
     from cython.cimports.numpy import (
         NPY_ARRAY_WRITEABLE,
         NPY_DOUBLE,
@@ -37,6 +38,8 @@ if cython.compiled:
     import_array()
 else:
     import numpy as np
+
+    _store = object.__setattr__  # the frozen dataclasses' own way round their __setattr__
 
 from ..results import Intersection, IntersectionList, Overlap, ParameterBox, Result
 from .constants import KIND_CROSSING, KIND_OVERLAP, KIND_TANGENT
@@ -54,8 +57,8 @@ def distribute(rows, items: list, boxes: list, planar: cython.bint, looks: list 
     ``boxes``, lists of lists) or space rows of one pair (``planar`` False; ``items[0]`` and
     ``boxes[0]`` take them). A point's coordinates are its own new read-only array
     (:func:`_coords`). The objects are built without the frozen dataclasses' ``__init__``
-    (three guarded ``setattr`` each): their ``__dict__`` is filled with the same fields, so they
-    compare, hash and print as if built by hand.
+    (three guarded ``setattr`` each): their fields are stored as ``object.__setattr__`` stores
+    them (the C call, compiled), so they compare, hash and print as if built by hand.
 
     ``looks`` (a list, or None) gets the index of each pair with a row that
     :func:`relief_cad.contacts.needs_refining` may not pass as it is, once: a box, a contact that
@@ -136,37 +139,34 @@ def _coords(R: cython.const[cython.double][:, :], i: cython.Py_ssize_t,
 @cython.cfunc
 def _point(t: cython.double, u: cython.double, point: object, kind: object,
            distance: cython.double) -> object:
-    """An :class:`Intersection` with these fields (its ``__dict__`` filled directly)."""
+    """An :class:`Intersection` with these fields (stored as ``object.__setattr__`` does)."""
     obj = Intersection.__new__(Intersection)
-    d: dict = obj.__dict__
-    d["t"] = t
-    d["u"] = u
-    d["point"] = point
-    d["kind"] = kind
-    d["distance"] = distance
+    _store(obj, "t", t)
+    _store(obj, "u", u)
+    _store(obj, "point", point)
+    _store(obj, "kind", kind)
+    _store(obj, "distance", distance)
     return obj
 
 
 @cython.cfunc
 def _overlap(t: tuple, u: tuple) -> object:
-    """An :class:`Overlap` with these fields (its ``__dict__`` filled directly)."""
+    """An :class:`Overlap` with these fields (stored as ``object.__setattr__`` does)."""
     obj = Overlap.__new__(Overlap)
-    d: dict = obj.__dict__
-    d["t"] = t
-    d["u"] = u
-    d["kind"] = "overlap"
+    _store(obj, "t", t)
+    _store(obj, "u", u)
+    _store(obj, "kind", "overlap")
     return obj
 
 
 @cython.cfunc
 def _box(t0: cython.double, t1: cython.double, u0: cython.double, u1: cython.double) -> object:
-    """A :class:`ParameterBox` with these fields (its ``__dict__`` filled directly)."""
+    """A :class:`ParameterBox` with these fields (stored as ``object.__setattr__`` does)."""
     obj = ParameterBox.__new__(ParameterBox)
-    d: dict = obj.__dict__
-    d["t0"] = t0
-    d["t1"] = t1
-    d["u0"] = u0
-    d["u1"] = u1
+    _store(obj, "t0", t0)
+    _store(obj, "t1", t1)
+    _store(obj, "u0", u0)
+    _store(obj, "u1", u1)
     return obj
 
 
