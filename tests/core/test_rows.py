@@ -94,3 +94,21 @@ def test_a_pair_is_final_only_when_every_row_is_an_interior_crossing(
     assert got is final and len(res) + len(res.unresolved) == 2
     lists, looks = rows_module.batch_lists(np.vstack([rows, rows + np.eye(9)[0]]), np.array([1e-9, 2e-9]))
     assert looks == ([] if final else [0, 1]) and [x.tol_used for x in lists] == [1e-9, 2e-9]
+
+
+def test_points_are_their_own_arrays_and_stay_put_when_the_kernel_scratch_is_reused() -> None:
+    # a planar pair's result list is made on the kernel's scratch rows (reused by the next call):
+    # each point must be its own array, not a view of rows the next pair writes over
+    f9 = [-1.09375, 4.135416666666667, -3.1354166666666665, 2.09375]
+    x3 = [0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0]
+    nine = (RationalBezier(np.column_stack([x3, f9])), RationalBezier(np.column_stack([f9, x3])))
+    one = (RationalBezier([[0, 0], [1, 2], [2, 2], [3, 0]]), RationalBezier([[1.5, -0.5], [1.5, 2.5]]))
+    first = intersect(*nine)
+    kept = [r.point.copy() for r in first]
+    assert len(first) == 9
+    for _ in range(3):
+        assert len(intersect(*one)) == 1 and len(intersect(*nine)) == 9
+    for r, p in zip(first, kept, strict=True):
+        assert r.point.flags.owndata and not r.point.flags.writeable
+        assert r.point.tolist() == p.tolist()
+        assert np.allclose(r.point, nine[0](r.t), atol=1e-12)
