@@ -72,13 +72,7 @@ def distribute(rows, items: list, boxes: list, planar: cython.bint, looks: list 
     ([Overlap(t=(0.1, 0.3), u=(0.2, 0.4), kind='overlap')],
      [ParameterBox(t0=0.0, t1=1.0, u0=0.0, u1=1.0)], [1])
     """
-    _fill(_readable(rows), items, boxes, planar, looks)
-
-
-@cython.cfunc
-def _readable(rows: object) -> object:
-    """``rows`` as the row loops read them: as given compiled; uncompiled, as Python floats (not numpy's)."""
-    return rows if cython.compiled else rows.astype(object)
+    _fill(rows, items, boxes, planar, looks)
 
 
 @cython.cfunc
@@ -88,6 +82,8 @@ def _fill(R: cython.const[cython.double][:, :], items: list, boxes: list, planar
 
     ``looks``: a list or None.
     """
+    if not cython.compiled:  # plain Python reads the rows as Python floats, as compiled (not numpy's)
+        R = R.astype(object)
     i: cython.Py_ssize_t
     c: cython.Py_ssize_t = 1 if planar else 0  # the kind's column
     k: cython.Py_ssize_t = 0
@@ -193,10 +189,7 @@ def rows_to_list(rows: cython.const[cython.double][:, :],
         return out, True
     boxes: list = []
     looks: list = []
-    if cython.compiled:
-        _fill(rows, [out], [boxes], True, looks)  # the view as it came: no new one
-    else:
-        _fill(_readable(rows), [out], [boxes], True, looks)
+    _fill(rows, [out], [boxes], True, looks)  # compiled: the view as it came, no new one
     if boxes:
         out.unresolved = tuple(boxes)
     return out, not looks
@@ -227,7 +220,7 @@ def batch_lists(rows, tols) -> tuple[list[IntersectionList], list[int]]:
         lists.append(out)
         boxes.append([])
     looks: list = []
-    _fill(_readable(rows), lists, boxes, True, looks)
+    _fill(rows, lists, boxes, True, looks)
     for j in looks:
         if boxes[j]:
             lists[j].unresolved = tuple(boxes[j])
@@ -244,5 +237,5 @@ def space_results(rows) -> tuple[list[Result], list[ParameterBox]]:
     """
     items: list = []
     boxes: list = []
-    _fill(_readable(rows), [items], [boxes], False, None)
+    _fill(rows, [items], [boxes], False, None)
     return items, boxes
