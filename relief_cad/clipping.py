@@ -27,6 +27,7 @@ clip range is where both hulls reach ``>= 0``.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 from numpy.typing import NDArray
@@ -256,22 +257,24 @@ def intersect_packed(points: FloatArray, weights: FloatArray, offsets: FloatArra
     p.flags.writeable = False
     w.flags.writeable = False
     nworkers = check_workers(workers)
-    tols = _pair_tolerances(p, w, off, pr, given)
-    return batch_rows(p, w, off, pr, tols, int(budget), nworkers)
+    # each chunk's tolerances are computed on its own thread (without the GIL for the default)
+    return batch_rows(p, w, off, pr, _pair_tolerances(p, w, off, pr, given), int(budget), nworkers)
 
 
 _MIN_CHUNK = 256  # pairs per thread, at least: below that a thread costs more than it gains
 
 
 def batch_rows(points: FloatArray, weights: FloatArray, offsets: NDArray[np.int64], pairs: NDArray[np.int64],
-               tols: FloatArray, budget: int, workers: int | None = None) -> FloatArray:
+               tols: FloatArray | Callable[[int, int], FloatArray], budget: int,
+               workers: int | None = None) -> FloatArray:
     """Run the batch kernel on packed pairs, split into chunks over ``workers`` threads: all rows.
 
     The arrays are those of :func:`intersect_packed`, already checked (``points`` and
-    ``weights`` read-only); ``tols`` holds each pair's tolerance (model units); ``workers``
-    None is every core. The kernel runs without the GIL, so the chunks run at once; their
-    rows are joined in pair order (column 0 indexes ``pairs``), the same rows for any
-    ``workers``. An exception is that of the first chunk, in order, that raised.
+    ``weights`` read-only); ``tols`` holds each pair's tolerance (model units), or is a function
+    giving those of pairs ``lo`` to ``hi - 1`` as ``tols(lo, hi)``, called once per chunk on the
+    chunk's thread; ``workers`` None is every core. The kernel runs without the GIL, so the
+    chunks run at once; their rows are joined in pair order (column 0 indexes ``pairs``), the
+    same rows for any ``workers``. An exception is that of the first chunk, in order, that raised.
 
     >>> pts = np.array([[0.0, 0.0], [2.0, 2.0], [0.0, 2.0], [2.0, 0.0]])
     >>> pts.flags.writeable = False
@@ -285,27 +288,29 @@ def batch_rows(points: FloatArray, weights: FloatArray, offsets: NDArray[np.int6
     n = pairs.shape[0]
     threads = 1 if n < 2 * _MIN_CHUNK else check_workers(workers)  # a few pairs: no pool
     size = n if threads <= 1 else max(_MIN_CHUNK, -(-n // threads))
-    if size >= n:
-        rows: FloatArray = intersect_batch_kernel(points, weights, offsets, pairs, tols, budget)
-        return rows
 
     def chunk(start: int) -> FloatArray:
-        part: FloatArray = intersect_batch_kernel(
-            points, weights, offsets, pairs[start:start + size], tols[start:start + size], budget
-        )
-        part[:, 0] += start
+        stop = min(n, start + size)
+        part_tols = tols(start, stop) if callable(tols) else tols[start:stop]
+        part: FloatArray = intersect_batch_kernel(points, weights, offsets, pairs[start:stop], part_tols,
+                                                  budget)
+        if start:
+            part[:, 0] += start
         return part
 
-    starts = range(0, n, size)
-    return np.concatenate(run_ordered(chunk, starts, threads))
+    if size >= n:
+        return chunk(0)
+    return np.concatenate(run_ordered(chunk, range(0, n, size), threads))
 
 
 def _pair_tolerances(p: FloatArray, w: FloatArray, off: NDArray[np.int64], pairs: NDArray[np.int64],
-                     tol: float | None) -> FloatArray:
-    """Each pair's :func:`~relief_cad.tolerances.resolve_tolerance` (curves built once each, when needed).
+                     tol: float | None) -> Callable[[int, int], FloatArray]:
+    """Each pair's :func:`~relief_cad.tolerances.resolve_tolerance` by chunk: ``f(lo, hi)``, pairs lo to hi-1.
 
-    The default (``tol`` None) is computed on the packed arrays in one compiled call; its
-    homogeneous rows are those a :class:`~relief_cad.RationalBezier` makes (``p * w``, then ``w``).
+    The default (``tol`` None) is computed on the packed arrays in one compiled call per chunk,
+    without the GIL (so chunks on threads compute theirs at once); its homogeneous rows are
+    those a :class:`~relief_cad.RationalBezier` makes (``p * w``, then ``w``). Curves are built
+    once each, when needed (a given ``tol``, or a pair whose sample is degenerate).
     """
     curves: dict[int, RationalBezier] = {}
 
@@ -319,5 +324,6 @@ def _pair_tolerances(p: FloatArray, w: FloatArray, off: NDArray[np.int64], pairs
         with np.errstate(over="ignore", invalid="ignore"):  # an overflow: that pair's curve raises
             H[:, :2] = p * w[:, None]
         H[:, 2] = w
-        return _default_tolerances(curve, H, p, off, pairs)
-    return np.array([resolve_tolerance(tol, curve(i), curve(j)) for i, j in pairs.tolist()])
+        return lambda lo, hi: _default_tolerances(curve, H, p, off, pairs[lo:hi])
+    return lambda lo, hi: np.array([resolve_tolerance(tol, curve(i), curve(j))
+                                    for i, j in pairs[lo:hi].tolist()])

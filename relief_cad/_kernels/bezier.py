@@ -23,6 +23,7 @@ else:  # uncompiled (Python < 3.13 has no math.fma): the same correctly rounded 
         return float(Fraction(a) * Fraction(b) + Fraction(c))
 
 _INF = cython.declare(cython.double, math.inf)  # a C constant (``math.inf`` is a Python lookup)
+_NAN = cython.declare(cython.double, math.nan)
 
 
 def _grow(arr, n):
@@ -526,6 +527,7 @@ def _homog_into(
 
 
 @cython.cfunc
+@cython.nogil
 @cython.exceptval(check=False)
 def _sample_into(H: cython.const[cython.double][:, :], P: cython.const[cython.double][:, :],
                  T: cython.const[cython.double][:], wk: cython.double[:, :], lo: cython.Py_ssize_t,
@@ -569,6 +571,7 @@ def _sample_into(H: cython.const[cython.double][:, :], P: cython.const[cython.do
 
 
 @cython.cfunc
+@cython.nogil
 @cython.exceptval(check=False)
 def _rule(wk: cython.double[:, :], lo: cython.Py_ssize_t, dim: cython.Py_ssize_t, big: cython.double,
           rel: cython.double, ulps: cython.double) -> cython.double:
@@ -578,6 +581,7 @@ def _rule(wk: cython.double[:, :], lo: cython.Py_ssize_t, dim: cython.Py_ssize_t
 
 
 @cython.cfunc
+@cython.nogil
 @cython.exceptval(check=False)
 def _rule3(lo0: cython.double, lo1: cython.double, lo2: cython.double, hi0: cython.double,
            hi1: cython.double, hi2: cython.double, dim: cython.Py_ssize_t, big: cython.double,
@@ -719,7 +723,8 @@ def pair_tolerances(
 
     Curve ``k`` has the homogeneous rows ``H[offsets[k]:offsets[k + 1]]`` and the control points
     ``P[offsets[k]:offsets[k + 1]]``; ``pairs`` (p, 2) indexes curves; ``table[m, :m]`` is
-    ``np.linspace(0.0, 1.0, m)``. No Python per pair (the batch's hot path).
+    ``np.linspace(0.0, 1.0, m)``. No Python per pair (the batch's hot path), and the pairs run
+    without the GIL, so threads compute chunks of a batch at once.
     """
     k: cython.Py_ssize_t
     j: cython.Py_ssize_t
@@ -736,21 +741,22 @@ def pair_tolerances(
     out = np.empty(pairs.shape[0])
     o: cython.double[:] = out
     wk: cython.double[:, :] = np.empty((rows + 2, dim + 1))
-    for k in range(pairs.shape[0]):
-        for c in range(dim):
-            wk[rows, c] = _INF
-            wk[rows + 1, c] = -_INF
-        big = 0.0
-        for j in range(2):
-            lo = offsets[pairs[k, j]]
-            hi = offsets[pairs[k, j] + 1]
-            n = hi - lo - 1
-            m = min(2 * n + 3, samples)
-            if n < 1 or big < 0.0:
-                big = -1.0
-                break
-            big = _sample_into(H[lo:hi], P[lo:hi], table[m, :m], wk, rows, big)
-        o[k] = math.nan if big < 0.0 else _rule(wk, rows, dim, big, rel, ulps)
-        if o[k] < 0.0:
-            o[k] = math.nan
+    with cython.nogil:  # threads compute the tolerances of their chunks at once
+        for k in range(pairs.shape[0]):
+            for c in range(dim):
+                wk[rows, c] = _INF
+                wk[rows + 1, c] = -_INF
+            big = 0.0
+            for j in range(2):
+                lo = offsets[pairs[k, j]]
+                hi = offsets[pairs[k, j] + 1]
+                n = hi - lo - 1
+                m = min(2 * n + 3, samples)
+                if n < 1 or big < 0.0:
+                    big = -1.0
+                    break
+                big = _sample_into(H[lo:hi], P[lo:hi], table[m, :m], wk, rows, big)
+            o[k] = _NAN if big < 0.0 else _rule(wk, rows, dim, big, rel, ulps)
+            if o[k] < 0.0:
+                o[k] = _NAN
     return out
