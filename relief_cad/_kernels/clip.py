@@ -11,9 +11,10 @@ from __future__ import annotations
 import math
 
 import cython
-from cython.cimports.libc.math import hypot, sqrt
+from cython.cimports.libc.math import atan2, hypot, sqrt
 
 _INF = cython.declare(cython.double, math.inf)  # a C constant (``math.inf`` is a Python lookup)
+_PI = cython.declare(cython.double, math.pi)
 
 
 @cython.cfunc
@@ -168,3 +169,74 @@ def clip_range_kernel(
         e[j] = W[j] * (dmax - (nx * P[j, 0] + ny * P[j, 1] + c))
     lo2, hi2 = hull_range_kernel(e)
     return max(lo1, lo2), min(hi1, hi2)
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _cone(P: cython.const[cython.double][:, :]) -> tuple[cython.double, cython.double]:
+    """The angles ``(lo, hi)`` (radians) of a cone holding every tangent direction of the curve ``P``.
+
+    ``P``: Cartesian control points of a rational Bézier curve of positive weights. Its
+    derivative is a combination with non-negative coefficients of the differences ``P_j - P_i``,
+    ``i < j`` (``w_i w_j B_i B_j (j - i) / (t (1 - t) W^2)``), each a sum of legs ``P_k+1 - P_k``
+    of the control polygon: each tangent direction lies in the cone of the legs. Each leg's angle
+    is widened by its rounding (``64 eps`` times the largest coordinate over its length). ``lo >
+    hi`` when the cone is not known to be narrower than a right angle (a leg too short to tell
+    its direction, or directions too far apart).
+    """
+    i: cython.Py_ssize_t
+    m: cython.Py_ssize_t = P.shape[0]
+    big: cython.double = 0.0
+    for i in range(m):
+        big = max(big, abs(P[i, 0]), abs(P[i, 1]))
+    rx: cython.double = P[m - 1, 0] - P[0, 0]  # the chord: one of the differences
+    ry: cython.double = P[m - 1, 1] - P[0, 1]
+    if rx == 0.0 and ry == 0.0:
+        return 1.0, 0.0
+    lo: cython.double = 0.0
+    hi: cython.double = 0.0
+    for i in range(m - 1):
+        vx = P[i + 1, 0] - P[i, 0]
+        vy = P[i + 1, 1] - P[i, 1]
+        n = hypot(vx, vy)
+        if n == 0.0:
+            continue  # a repeated point: no direction
+        err = 64.0 * 2.220446049250313e-16 * big / n
+        if err > 1e-3:
+            return 1.0, 0.0
+        a = atan2(rx * vy - ry * vx, rx * vx + ry * vy)  # from the chord's direction
+        lo = min(lo, a - err)
+        hi = max(hi, a + err)
+    if hi - lo >= 0.5 * _PI:
+        return 1.0, 0.0
+    base = atan2(ry, rx)
+    return base + lo, base + hi
+
+
+def cones_apart(P: cython.const[cython.double][:, :], Q: cython.const[cython.double][:, :]) -> cython.bint:
+    """True when no tangent of the curve ``P`` can be parallel to one of ``Q``: they meet at most once.
+
+    ``P``, ``Q``: Cartesian control points of planar rational Bézier curves of positive weights.
+    The cones of their tangent directions (:func:`_cone`) are compared as lines (directions
+    modulo pi). Two meetings would give both curves the chord between them, and a chord of a
+    curve is an integral of its derivative, so it lies in the curve's cone: in both. (The
+    tangent-cone test of Sederberg and Meyers; not part of the paper.)
+
+    >>> import numpy as np
+    >>> steep = np.array([[0.0, -1.0], [0.1, 0.0], [0.0, 1.0]])
+    >>> flat = np.array([[-1.0, 0.0], [0.0, 0.1], [1.0, 0.0]])
+    >>> bool(cones_apart(steep, flat)), bool(cones_apart(flat, flat[::-1].copy()))
+    (True, False)
+    """
+    alo, ahi = _cone(P)
+    if not alo <= ahi:
+        return False
+    blo, bhi = _cone(Q)
+    if not blo <= bhi:
+        return False
+    k: cython.int
+    for k in range(-3, 4):
+        if blo + k * _PI <= ahi + 1e-15 and alo <= bhi + k * _PI + 1e-15:
+            return False
+    return True

@@ -2,7 +2,7 @@
 # polish.pxd, certify.pxd)
 from relief_cad._kernels.bezier cimport _cartesian, _curve_box_update, _eval, _frame, _homog_into, _segment
 from relief_cad._kernels.certify cimport _polish_dd, _side_dd
-from relief_cad._kernels.clip cimport clip_range_kernel, fat_line_kernel
+from relief_cad._kernels.clip cimport clip_range_kernel, cones_apart, fat_line_kernel
 from relief_cad._kernels.polish cimport _angle_sin, _closest, _coincide, _local_dist, _local_proj, _newton, _point_on
 
 # the pair driver without the GIL and its helpers, called as C functions by batch.py (cpdef: the

@@ -16,7 +16,7 @@ from cython.cimports.libc.math import hypot, sqrt
 
 from .bezier import _cartesian, _curve_box_update, _eval, _frame, _grow, _homog_into, _segment
 from .certify import _polish_dd, _side_dd
-from .clip import clip_range_kernel, fat_line_kernel
+from .clip import clip_range_kernel, cones_apart, fat_line_kernel
 from .constants import (
     _EPS,
     _ROUND,
@@ -384,6 +384,30 @@ def _drop_near_roots(HA: cython.const[cython.double][:, :], HB: cython.const[cyt
             roots[k2, 2] = roots[k, 2]
             k2 += 1
     return k2
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _sole_root(HA: cython.const[cython.double][:, :], HB: cython.const[cython.double][:, :],
+               roots: cython.double[:, :], t0: cython.double, t1: cython.double, u0: cython.double,
+               u1: cython.double, SA: cython.double[:, :], SB: cython.double[:, :], CA: cython.double[:, :],
+               CB: cython.double[:, :], VA: cython.double[:], VB: cython.double[:]) -> cython.bint:
+    """True when the certified root ``roots[0]`` is the only one of the cluster ``[t0, t1] x [u0, u1]``.
+
+    It lies in the cluster's box, and the two curves' pieces over it meet at most once: their
+    tangent cones are apart (:func:`.clip.cones_apart`). A wide cluster of a crossing at a low
+    angle (or of two boxes meeting at a subdivision's split) then needs no Newton runs from seeds
+    along its diagonals: each would end at this root. ``SA``, ``SB``, ``CA``, ``CB``, ``VA``,
+    ``VB`` are scratch (the clipping's, free once it has ended).
+    """
+    if roots[0, 2] != 1.0 or not (t0 <= roots[0, 0] <= t1 and u0 <= roots[0, 1] <= u1):
+        return False
+    _segment(HA, t0, t1, SA)
+    _segment(HB, u0, u1, SB)
+    _cartesian(SA, CA, VA)
+    _cartesian(SB, CB, VB)
+    return cones_apart(CA, CB)
 
 
 @cython.cfunc
@@ -991,6 +1015,7 @@ def _pair_core(
             seeds[ks, 0] = 0.5 * (cands[i, 0] + cands[i, 1])
             seeds[ks, 1] = 0.5 * (cands[i, 2] + cands[i, 3])
             ks += 1
+        kmem = ks  # the member seeds; the diagonal ones follow
         if wide:
             for q in range(5):
                 f = (q + 0.5) / 5.0
@@ -1005,6 +1030,9 @@ def _pair_core(
         padt = max(1e-6, ct1 - ct0)
         padu = max(1e-6, cu1 - cu0)
         for q in range(ks):
+            if q == kmem and nroots == 1 and _sole_root(HA, HB, roots, ct0, ct1, cu0, cu1, SA, SB, CA, CB,
+                                                        VA, VB):
+                break  # the diagonal seeds could find no other root
             t, u, r = _newton(HA, HB, seeds[q, 0], seeds[q, 1], wa, wb, 60)
             if t < ct0 - padt or t > ct1 + padt or u < cu0 - padu or u > cu1 + padu:
                 continue

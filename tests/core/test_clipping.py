@@ -257,3 +257,46 @@ def test_hypot_le_decides_as_hypot() -> None:
     out = subprocess.run([sys.executable, "-c", _HYPOT_LE_CHECK], env=dict(os.environ, RELIEF_CAD_PURE="1"),
                          capture_output=True, text=True, timeout=600, check=False)
     assert out.returncode == 0, out.stdout[-2000:] + out.stderr[-2000:]
+
+
+def _random_rational(rng: np.random.Generator) -> RationalBezier:
+    n = int(rng.integers(2, 8))
+    return RationalBezier(rng.random((n, 2)), 10.0 ** rng.uniform(-1.5, 1.5, n))
+
+
+def test_a_chord_of_a_curve_lies_in_its_tangent_cone() -> None:
+    # the cone of a rational curve's control polygon legs holds every chord of the curve (a chord is
+    # an integral of the derivative), at any weights: a line along a chord is never apart from it
+    from relief_cad._kernels.clip import cones_apart
+
+    rng = np.random.default_rng(21)
+    for _ in range(400):
+        a = _random_rational(rng)
+        s0, s1 = sorted(rng.uniform(0.0, 1.0, 2))
+        piece = a.segment(s0, s0 + (s1 - s0) * 10.0 ** rng.uniform(-4, 0))
+        t1, t2 = sorted(rng.uniform(0.0, 1.0, 2))
+        chord = np.array([piece.evaluate(t1), piece.evaluate(t2)])
+        if np.linalg.norm(chord[1] - chord[0]) > 1e-12:
+            assert not cones_apart(piece.control_points, chord)
+            assert not cones_apart(chord, piece.control_points)
+
+
+def test_curves_whose_tangent_cones_are_apart_meet_at_most_once() -> None:
+    from relief_cad._kernels.clip import cones_apart
+    from relief_cad.intersection import intersect
+
+    rng = np.random.default_rng(22)
+    apart = 0
+    for _ in range(400):
+        a = _random_rational(rng)
+        t = rng.uniform(0.2, 0.8)
+        piece = a.segment(t - 0.1, t + 0.1)
+        centre = piece.evaluate(0.5)
+        turn = rng.uniform(0.01, 1.5)
+        rot = np.array([[np.cos(turn), np.sin(turn)], [-np.sin(turn), np.cos(turn)]])
+        other = RationalBezier((piece.control_points - centre) @ rot + centre + rng.normal(0, 0.01, 2),
+                               piece.weights[::-1].copy())
+        if cones_apart(piece.control_points, other.control_points):
+            apart += 1
+            assert len(intersect(piece, other)) <= 1
+    assert apart > 100  # the test sees many pairs whose cones are apart
