@@ -231,7 +231,10 @@ def _only_one_side(p_relief: np.ndarray, p_occt: np.ndarray, tol: float) -> tupl
 
 
 def _verdict(edges: list[Any], only_r: np.ndarray, only_o: np.ndarray, tol: float, limit: int = 12) -> str:
-    """Judge every vertex found by one side only (at most ``limit`` of them) with the 50-digit arbiter.
+    """Judge the vertices found by one side only with the 50-digit arbiter: ``limit`` of each side at most.
+
+    Past ``limit`` (each judgment takes about a second), the judged ones are spread evenly over
+    that side's list (:func:`_spread`), not its first ones, which lie close together.
 
     A vertex is *real* when it is an end of an input edge, or when two input edges near it
     (or one edge with itself) meet there: :func:`relief_cad.cad.arbitrate_point`, started
@@ -243,11 +246,22 @@ def _verdict(edges: list[Any], only_r: np.ndarray, only_o: np.ndarray, tol: floa
         return "same"
     boxes = _edge_boxes(edges)
     tally = {"relief-only real": 0, "relief-only wrong": 0, "occt-only real": 0, "occt-only wrong": 0}
-    for side, points in (("relief", only_r[:limit]), ("occt", only_o[:limit])):
+    for side, points in (("relief", _spread(only_r, limit)), ("occt", _spread(only_o, limit))):
         for p in points:
             tally[f"{side}-only {'real' if _real_vertex(edges, boxes, p, tol) else 'wrong'}"] += 1
     judged = ", ".join(f"{k}: {v}" for k, v in tally.items() if v)
     return f"{judged} (of {len(only_r)}+{len(only_o)} one-sided vertices)"
+
+
+def _spread(points: np.ndarray, limit: int) -> np.ndarray:
+    """At most ``limit`` rows of ``points``, evenly spaced over them (all of them when they are few).
+
+    >>> _spread(np.arange(10.0).reshape(-1, 1), 4)[:, 0].tolist()
+    [0.0, 3.0, 6.0, 9.0]
+    """
+    if len(points) <= limit:
+        return points
+    return points[np.unique(np.linspace(0, len(points) - 1, limit).round().astype(int))]
 
 
 def _edge_boxes(edges: list[Any]) -> tuple[np.ndarray, np.ndarray]:
