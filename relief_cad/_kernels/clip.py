@@ -174,65 +174,70 @@ def clip_range_kernel(
 @cython.cfunc
 @cython.nogil
 @cython.exceptval(check=False)
-def _cone(P: cython.const[cython.double][:, :]) -> tuple[cython.double, cython.double]:
+def _cone(P: cython.const[cython.double][:, :], err: cython.double) -> tuple[cython.double, cython.double]:
     """The angles ``(lo, hi)`` (radians) of a cone holding every tangent direction of the curve ``P``.
 
-    ``P``: Cartesian control points of a rational Bézier curve of positive weights. Its
-    derivative is a combination with non-negative coefficients of the differences ``P_j - P_i``,
-    ``i < j`` (``w_i w_j B_i B_j (j - i) / (t (1 - t) W^2)``), each a sum of legs ``P_k+1 - P_k``
-    of the control polygon: each tangent direction lies in the cone of the legs. Each leg's angle
-    is widened by its rounding (``64 eps`` times the largest coordinate over its length). ``lo >
-    hi`` when the cone is not known to be narrower than a right angle (a leg too short to tell
-    its direction, or directions too far apart).
+    ``P``: Cartesian control points of a rational Bézier curve of positive weights, each within
+    ``err`` of the exact one. Its derivative is a combination with non-negative coefficients of
+    the differences ``P_j - P_i``, ``i < j`` (``w_i w_j B_i B_j (j - i) / (t (1 - t) W^2)``), each a
+    sum of legs ``P_k+1 - P_k`` of the control polygon: each tangent direction lies in the cone of
+    the legs. Each leg's angle is widened by the error of its ends and its rounding (``2 err + 4
+    eps`` times the largest coordinate, over its length). ``lo > hi`` when the cone is not known
+    to be narrower than a right angle (a leg too short to tell its direction, or directions too
+    far apart).
     """
     i: cython.Py_ssize_t
     m: cython.Py_ssize_t = P.shape[0]
     big: cython.double = 0.0
     for i in range(m):
         big = max(big, abs(P[i, 0]), abs(P[i, 1]))
-    rx: cython.double = P[m - 1, 0] - P[0, 0]  # the chord: one of the differences
+    rx: cython.double = P[m - 1, 0] - P[0, 0]  # the chord: a sum of the legs
     ry: cython.double = P[m - 1, 1] - P[0, 1]
     if rx == 0.0 and ry == 0.0:
         return 1.0, 0.0
+    off: cython.double = 2.0 * err + 4.0 * 2.220446049250313e-16 * big  # a leg's end points' error
     lo: cython.double = 0.0
     hi: cython.double = 0.0
     for i in range(m - 1):
         vx = P[i + 1, 0] - P[i, 0]
         vy = P[i + 1, 1] - P[i, 1]
         n = hypot(vx, vy)
-        if n == 0.0:
-            continue  # a repeated point: no direction
-        err = 64.0 * 2.220446049250313e-16 * big / n
-        if err > 1e-3:
+        if n == 0.0 and off == 0.0:
+            continue  # an exactly repeated point: no direction
+        if not off <= 1e-3 * n:
             return 1.0, 0.0
         a = atan2(rx * vy - ry * vx, rx * vx + ry * vy)  # from the chord's direction
-        lo = min(lo, a - err)
-        hi = max(hi, a + err)
+        lo = min(lo, a - 2.0 * off / n)  # asin(off / n) < 2 off / n for off / n <= 1e-3
+        hi = max(hi, a + 2.0 * off / n)
     if hi - lo >= 0.5 * _PI:
         return 1.0, 0.0
     base = atan2(ry, rx)
     return base + lo, base + hi
 
 
-def cones_apart(P: cython.const[cython.double][:, :], Q: cython.const[cython.double][:, :]) -> cython.bint:
+def cones_apart(P: cython.const[cython.double][:, :], Q: cython.const[cython.double][:, :],
+                ep: cython.double = 0.0, eq: cython.double = 0.0) -> cython.bint:
     """True when no tangent of the curve ``P`` can be parallel to one of ``Q``: they meet at most once.
 
-    ``P``, ``Q``: Cartesian control points of planar rational Bézier curves of positive weights.
-    The cones of their tangent directions (:func:`_cone`) are compared as lines (directions
-    modulo pi). Two meetings would give both curves the chord between them, and a chord of a
-    curve is an integral of its derivative, so it lies in the curve's cone: in both. (The
-    tangent-cone test of Sederberg and Meyers; not part of the paper.)
+    ``P``, ``Q``: Cartesian control points of planar rational Bézier curves of positive weights,
+    each point within ``ep`` (``eq``) of the exact one (model units; 0 for exact data). The cones
+    of their tangent directions (:func:`_cone`) are compared as lines (directions modulo pi).
+    Two meetings would give both curves the chord between them, and a chord of a curve is an
+    integral of its derivative, so it lies in the curve's cone: in both. (The tangent-cone test
+    of Sederberg and Meyers; not part of the paper.)
 
     >>> import numpy as np
     >>> steep = np.array([[0.0, -1.0], [0.1, 0.0], [0.0, 1.0]])
     >>> flat = np.array([[-1.0, 0.0], [0.0, 0.1], [1.0, 0.0]])
     >>> bool(cones_apart(steep, flat)), bool(cones_apart(flat, flat[::-1].copy()))
     (True, False)
+    >>> bool(cones_apart(steep, flat, 0.01, 0.01))  # points known to 0.01 only: cones too wide
+    False
     """
-    alo, ahi = _cone(P)
+    alo, ahi = _cone(P, ep)
     if not alo <= ahi:
         return False
-    blo, bhi = _cone(Q)
+    blo, bhi = _cone(Q, eq)
     if not blo <= bhi:
         return False
     k: cython.int

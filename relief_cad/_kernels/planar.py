@@ -396,10 +396,11 @@ def _sole_root(HA: cython.const[cython.double][:, :], HB: cython.const[cython.do
     """True when the certified root ``roots[0]`` is the only one of the cluster ``[t0, t1] x [u0, u1]``.
 
     It lies in the cluster's box, and the two curves' pieces over it meet at most once: their
-    tangent cones are apart (:func:`.clip.cones_apart`). A wide cluster of a crossing at a low
-    angle (or of two boxes meeting at a subdivision's split) then needs no Newton runs from seeds
-    along its diagonals: each would end at this root. ``SA``, ``SB``, ``CA``, ``CB``, ``VA``,
-    ``VB`` are scratch (the clipping's, free once it has ended).
+    tangent cones are apart (:func:`.clip.cones_apart`), with each piece's control points known
+    to :func:`_piece_error`. A wide cluster of a crossing at a low angle (or of two boxes meeting
+    at a subdivision's split) then needs no Newton runs from seeds along its diagonals: each
+    would end at this root. ``SA``, ``SB``, ``CA``, ``CB``, ``VA``, ``VB`` are scratch (the
+    clipping's, free once it has ended).
     """
     if roots[0, 2] != 1.0 or not (t0 <= roots[0, 0] <= t1 and u0 <= roots[0, 1] <= u1):
         return False
@@ -407,7 +408,26 @@ def _sole_root(HA: cython.const[cython.double][:, :], HB: cython.const[cython.do
     _segment(HB, u0, u1, SB)
     _cartesian(SA, CA, VA)
     _cartesian(SB, CB, VB)
-    return cones_apart(CA, CB)
+    return cones_apart(CA, CB, _piece_error(HA, SA), _piece_error(HB, SB))
+
+
+@cython.cfunc
+@cython.nogil
+@cython.exceptval(check=False)
+def _piece_error(H: cython.const[cython.double][:, :], S: cython.const[cython.double][:, :]) -> cython.double:
+    """A bound of the error of the Cartesian control points of ``S``, :func:`.bezier._segment` of ``H``.
+
+    de Casteljau's rounding in the homogeneous rows, ``2 m`` rounds of ``2 eps`` at most each
+    times their largest entry, over the piece's least weight (the division by it), doubled.
+    """
+    i: cython.Py_ssize_t
+    m: cython.Py_ssize_t = H.shape[0]
+    big: cython.double = 0.0
+    wmin: cython.double = _INF
+    for i in range(m):
+        big = max(big, abs(H[i, 0]), abs(H[i, 1]), abs(H[i, 2]))
+        wmin = min(wmin, S[i, 2])
+    return 8.0 * m * 2.220446049250313e-16 * big / wmin
 
 
 @cython.cfunc
