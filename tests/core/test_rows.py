@@ -9,12 +9,13 @@ import numpy as np
 import pytest
 
 import relief_cad._kernels.batch as batch_module
+import relief_cad._kernels.clip as clip_module
 import relief_cad._kernels.rows as rows_module
 from relief_cad import RationalBezier, intersect, intersect_many
 from relief_cad.results import Intersection, IntersectionList, Overlap, ParameterBox
 
 
-@pytest.mark.parametrize("module", [rows_module, batch_module])
+@pytest.mark.parametrize("module", [rows_module, batch_module, clip_module])
 def test_the_compiled_modules_run_their_own_examples(module: object) -> None:
     result = doctest.testmod(module, optionflags=doctest.NORMALIZE_WHITESPACE | doctest.ELLIPSIS)
     assert result.attempted >= 5 and result.failed == 0
