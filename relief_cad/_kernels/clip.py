@@ -13,8 +13,11 @@ import math
 import cython
 from cython.cimports.libc.math import atan2, hypot, sqrt
 
+from .constants import _EPS
+
 _INF = cython.declare(cython.double, math.inf)  # a C constant (``math.inf`` is a Python lookup)
 _PI = cython.declare(cython.double, math.pi)
+_C_EPS = cython.declare(cython.double, _EPS)  # a C copy of the machine epsilon
 
 
 @cython.cfunc
@@ -195,16 +198,14 @@ def _cone(P: cython.const[cython.double][:, :], err: cython.double) -> tuple[cyt
     ry: cython.double = P[m - 1, 1] - P[0, 1]
     if rx == 0.0 and ry == 0.0:
         return 1.0, 0.0
-    off: cython.double = 2.0 * err + 4.0 * 2.220446049250313e-16 * big  # a leg's end points' error
+    off: cython.double = 2.0 * err + 4.0 * _C_EPS * big  # a leg's end points' error (> 0 here)
     lo: cython.double = 0.0
     hi: cython.double = 0.0
     for i in range(m - 1):
         vx = P[i + 1, 0] - P[i, 0]
         vy = P[i + 1, 1] - P[i, 1]
         n = hypot(vx, vy)
-        if n == 0.0 and off == 0.0:
-            continue  # an exactly repeated point: no direction
-        if not off <= 1e-3 * n:
+        if not off <= 1e-3 * n:  # a repeated point too: no direction to tell
             return 1.0, 0.0
         a = atan2(rx * vy - ry * vx, rx * vx + ry * vy)  # from the chord's direction
         lo = min(lo, a - 2.0 * off / n)  # asin(off / n) < 2 off / n for off / n <= 1e-3

@@ -427,7 +427,7 @@ def _piece_error(H: cython.const[cython.double][:, :], S: cython.const[cython.do
     for i in range(m):
         big = max(big, abs(H[i, 0]), abs(H[i, 1]), abs(H[i, 2]))
         wmin = min(wmin, S[i, 2])
-    return 8.0 * m * 2.220446049250313e-16 * big / wmin
+    return 8.0 * m * _C_EPS * big / wmin
 
 
 @cython.cfunc
