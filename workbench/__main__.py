@@ -18,7 +18,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from ._signals import sigint_held
+from ._signals import ctrl_c_in_finalizers_kept, sigint_held
 
 __all__ = [
     "main",
@@ -479,11 +479,14 @@ def cli() -> None:
 
     Once the command is done, a Ctrl-C has nothing left to stop: it is ignored from then on, so
     that one arriving while the interpreter shuts down (OCP's modules take a moment to unload)
-    cannot kill the process by the signal and hide the real exit status. A Ctrl-C before
-    ``main`` starts (while Python imports the standard library) is Python's own.
+    cannot kill the process by the signal and hide the real exit status. One that comes while a
+    finalizer runs prints no traceback: compare's loop raises it (``ctrl_c_in_finalizers_kept``);
+    after the work it has nothing to stop. A Ctrl-C before ``main`` starts (while Python imports
+    the standard library) is Python's own.
     """
-    status = main()
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    with ctrl_c_in_finalizers_kept():
+        status = main()
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
     sys.exit(status)
 
 

@@ -1,13 +1,20 @@
-"""Ctrl-C held through a block: the one home of the workbench's signal hold (no heavy imports here)."""
+"""Ctrl-C held through a block, or kept from a finalizer: the one home of the workbench's signal handling.
+
+No heavy imports here.
+"""
 
 from __future__ import annotations
 
 import contextlib
 import signal
+import sys
 import threading
 from collections.abc import Iterator
+from typing import Any
 
-__all__ = ["sigint_held"]
+__all__ = ["ctrl_c_in_finalizers_kept", "raise_kept_ctrl_c", "sigint_held"]
+
+_KEPT: list[int] = []  # Ctrl-Cs that came while a finalizer ran (see ctrl_c_in_finalizers_kept)
 
 
 @contextlib.contextmanager
@@ -46,4 +53,50 @@ def sigint_held() -> Iterator[None]:
     finally:
         signal.signal(signal.SIGINT, old)
     if held:
+        raise KeyboardInterrupt
+
+
+@contextlib.contextmanager
+def ctrl_c_in_finalizers_kept() -> Iterator[None]:
+    """Keep a Ctrl-C that comes while a finalizer runs, silently, for :func:`raise_kept_ctrl_c`.
+
+    Python raises a Ctrl-C in whatever Python code runs when it comes. In a finalizer (a
+    ``__del__``, a weakref callback) the KeyboardInterrupt cannot reach the code around it:
+    Python prints "Exception ignored in ..." with its traceback and goes on. compare's progress
+    bar is freed as the run returns: a Ctrl-C just after the work was done printed a traceback
+    from tqdm's ``__del__``, and one coming there mid-run was lost. Within this block such a
+    Ctrl-C prints nothing and is kept; any other exception of a finalizer is reported as before.
+
+    >>> class Bar:
+    ...     def __del__(self):  # what a Ctrl-C that comes while the finalizer runs raises there
+    ...         raise KeyboardInterrupt
+    >>> with ctrl_c_in_finalizers_kept():
+    ...     bar = Bar()
+    ...     del bar  # its finalizer runs here
+    ...     try:
+    ...         raise_kept_ctrl_c()
+    ...     except KeyboardInterrupt:
+    ...         print("raised where the loop checks")
+    raised where the loop checks
+    """
+    before = sys.unraisablehook
+
+    def hook(info: Any) -> None:
+        if isinstance(info.exc_value, KeyboardInterrupt):
+            _KEPT.append(signal.SIGINT)
+        else:
+            before(info)
+
+    _KEPT.clear()
+    sys.unraisablehook = hook
+    try:
+        yield
+    finally:
+        sys.unraisablehook = before
+
+
+def raise_kept_ctrl_c() -> None:
+    """Raise KeyboardInterrupt if a finalizer got a Ctrl-C (:func:`ctrl_c_in_finalizers_kept`), once."""
+    if _KEPT:
+        _KEPT.clear()
         raise KeyboardInterrupt

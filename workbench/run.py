@@ -31,7 +31,7 @@ from tqdm import tqdm  # type: ignore[import-untyped]
 
 from relief_cad.errors import ReliefCadError
 
-from ._signals import sigint_held
+from ._signals import raise_kept_ctrl_c, sigint_held
 from .corpus import CorpusError, CorpusInfo, Item, check_corpus, read_corpus
 from .versions import tool_versions
 
@@ -411,6 +411,7 @@ def _drive(ex: Executor, window: int, batches: Iterator[list[Item | CorpusError]
             pending.discard(fut)
             if write(fut.result()):
                 return True
+        raise_kept_ctrl_c()  # one that came while a finalizer ran (the CLI keeps it), once written
         with sigint_held():
             fill()
     return False
