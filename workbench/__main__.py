@@ -18,7 +18,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from ._signals import ctrl_c_in_finalizers_kept, sigint_held
+from ._signals import ctrl_c_in_finalizers_kept, raise_kept_ctrl_c, sigint_held
 
 __all__ = [
     "main",
@@ -123,6 +123,7 @@ def _cmd_corpus(args: argparse.Namespace) -> int:
     def items() -> Any:  # the file is written (renamed into place) only when this ends normally
         n = 0
         for it in source:
+            raise_kept_ctrl_c()  # one that came while a finalizer ran (see cli)
             if isinstance(it, CorpusError):
                 problems.append(str(it))
                 _say(f"skipped: {it}")
@@ -480,9 +481,9 @@ def cli() -> None:
     Once the command is done, a Ctrl-C has nothing left to stop: it is ignored from then on, so
     that one arriving while the interpreter shuts down (OCP's modules take a moment to unload)
     cannot kill the process by the signal and hide the real exit status. One that comes while a
-    finalizer runs prints no traceback: compare's loop raises it (``ctrl_c_in_finalizers_kept``);
-    after the work it has nothing to stop. A Ctrl-C before ``main`` starts (while Python imports
-    the standard library) is Python's own.
+    finalizer runs prints no traceback: the loops of compare and corpus raise it
+    (``ctrl_c_in_finalizers_kept``); after the work it has nothing to stop. A Ctrl-C before
+    ``main`` starts (while Python imports the standard library) is Python's own.
     """
     with ctrl_c_in_finalizers_kept():
         status = main()

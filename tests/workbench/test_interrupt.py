@@ -201,3 +201,21 @@ def test_a_ctrl_c_kept_from_a_finalizer_stops_compare(tmp_path) -> None:
         summary = run_compare(path, tmp_path / "run", workers=1, progress=False, batch=2)
     assert summary["interrupted"] and not summary["complete"]
     assert 0 < len(records(tmp_path / "run")) < 8
+
+
+def test_a_ctrl_c_kept_from_a_finalizer_stops_corpus_and_keeps_the_old_file(tmp_path) -> None:
+    from relief_cad_workbench.__main__ import main
+    from relief_cad_workbench._signals import ctrl_c_in_finalizers_kept
+
+    out = tmp_path / "c.jsonl"
+    assert write_corpus(out, random_family("cubic", 3, seed=1)) == 3
+    before = out.read_bytes()
+    with ctrl_c_in_finalizers_kept():
+        obj = _CtrlCInFinalizer()
+        old = signal.signal(signal.SIGINT, signal.default_int_handler)
+        try:
+            del obj
+        finally:
+            signal.signal(signal.SIGINT, old)
+        status = main(["corpus", str(out), "--families", "cubic", "--count", "50"])
+    assert status == EXIT_INTERRUPTED and out.read_bytes() == before
