@@ -15,6 +15,10 @@ piece shares its vertices (``connected``) and ``BRepCheck_Analyzer`` on relief_c
 the counts differ, the vertices found by one side only are judged by the 50-digit arbiter
 (:func:`relief_cad.cad.compare` on the input edges around each such point): ``verdict`` says who is
 right. ``growth`` rows give the exponent of the cost with size (log-log slope between sizes).
+``ocp_floor_s`` is what the OCP calls alone cost that any arrangement returning OCCT edges must
+make, with General Fuse's counts (read the input curves, make the vertices and the edges;
+``_floor_calls``), and ``speedup_bound = occt_s / ocp_floor_s`` the most such an arrangement can
+reach: issue 13 asked for 10x at every size.
 
 Run ``python -m workbench bench arrange`` or ``python -m workbench.bench_arrange``.
 """
@@ -324,6 +328,61 @@ def _best(f: Callable[[], Any], repeat: int) -> tuple[Any, float]:
     return out, best
 
 
+def _ocp_floor(edges: list[Any], n_edges: int, n_vertices: int, repeat: int) -> float:
+    """Seconds of the OCP calls any ``arrange`` returning OCCT edges makes, at the least (best of ``repeat``).
+
+    Those of :func:`_floor_calls`; ``occt_s / floor_s`` bounds the speedup any arrangement built
+    through OCP can reach on the case.
+    """
+    return _best(_floor_calls(edges, n_edges, n_vertices), repeat)[1]
+
+
+def _floor_calls(edges: list[Any], n_edges: int,
+                 n_vertices: int) -> Callable[[], tuple[list[Any], list[Any]]]:
+    """The least OCP work of an arrangement with ``n_edges`` edges and ``n_vertices`` vertices, as a call.
+
+    The call reads each input edge's curve and range (``BRep_Tool``), then makes ``n_vertices``
+    vertices and ``n_edges`` edges on the input curves, each between two of those vertices, the
+    cheapest way (``BRep_Builder``: ``MakeVertex``; ``MakeEdge``, ``Range`` and two ``Add``), and
+    returns ``(vertices, edges)``. The points and parameters are found before: no intersection,
+    no checks.
+    """
+    from OCP.BRep import BRep_Builder, BRep_Tool
+    from OCP.gp import gp_Pnt
+    from OCP.TopAbs import TopAbs_FORWARD, TopAbs_REVERSED
+    from OCP.TopLoc import TopLoc_Location
+    from OCP.TopoDS import TopoDS_Edge, TopoDS_Vertex
+
+    per = -(-n_edges // len(edges))  # pieces cut from each input edge, evenly in its parameter
+    spans = []
+    for e in edges:
+        curve = BRep_Tool.Curve_s(e, TopLoc_Location(), 0.0, 0.0)
+        a, b = BRep_Tool.Range_s(e)
+        spans += [(curve, a + (b - a) * k / per, a + (b - a) * (k + 1) / per) for k in range(per)]
+    spans = spans[:n_edges]
+    points = [spans[k % n_edges][0].Value(spans[k % n_edges][1]).Coord() for k in range(n_vertices)]
+    builder = BRep_Builder()
+
+    def calls() -> tuple[list[Any], list[Any]]:
+        for e in edges:
+            BRep_Tool.Curve_s(e, TopLoc_Location(), 0.0, 0.0)
+            BRep_Tool.Range_s(e)
+        vertices = [TopoDS_Vertex() for _ in points]
+        for v, p in zip(vertices, points, strict=True):
+            builder.MakeVertex(v, gp_Pnt(*p), 1e-7)
+        made = []
+        for k, (curve, t0, t1) in enumerate(spans):
+            e = TopoDS_Edge()
+            builder.MakeEdge(e, curve, 1e-7)
+            builder.Range(e, t0, t1)
+            builder.Add(e, vertices[k % n_vertices].Oriented(TopAbs_FORWARD))
+            builder.Add(e, vertices[(k + 1) % n_vertices].Oriented(TopAbs_REVERSED))
+            made.append(e)
+        return vertices, made
+
+    return calls
+
+
 def _case(name: str, n: int, make: Callable[[], list[Any]]) -> dict[str, Any]:
     from OCP.BRepCheck import BRepCheck_Analyzer
 
@@ -344,6 +403,8 @@ def _case(name: str, n: int, make: Callable[[], list[Any]]) -> dict[str, Any]:
         "relief_V": r_vertices, "occt_V": o_vertices,
         "valid": bool(BRepCheck_Analyzer(comp).IsValid()), "connected": _connected(pieces),
     }
+    row["ocp_floor_s"] = _ocp_floor(edges, o_edges, o_vertices, repeat)
+    row["speedup_bound"] = occt_s / row["ocp_floor_s"]  # the most any arrange through OCP can reach
     if (r_edges, r_vertices) == (o_edges, o_vertices):
         row["verdict"] = "same"
     else:
