@@ -14,11 +14,12 @@ import numpy as np
 from cython.cimports.libc.math import fabs, sqrt
 
 from .bezier import _grow
-from .constants import KIND_UNRESOLVED, RES_COLS
+from .constants import _ROUND, KIND_UNRESOLVED, RES_COLS
 from .planar import _apart, _box, _pair_core, scratch_rows
 from .rows import rows_to_list
 
 _K_UNRESOLVED = cython.declare(cython.double, KIND_UNRESOLVED)  # a C copy for the loops
+_C_ROUND = cython.declare(cython.double, _ROUND)  # 64 eps
 _NO_ROWS = np.empty((0, RES_COLS))
 _NO_ROWS.flags.writeable = False
 _NO_ROWS_VIEW = cython.declare(cython.const[cython.double][:, :], _NO_ROWS)  # a typed view kept for C calls
@@ -48,7 +49,7 @@ def _boxes_apart(
         yh = max(ayh, byh)
         big = max(max(fabs(xl), fabs(xh)), max(fabs(yl), fabs(yh)))
         diag = sqrt((xh - xl) * (xh - xl) + (yh - yl) * (yh - yl))
-        bound = 2.0 * (1e-9 * diag + 64.0 * 2.220446049250313e-16 * big)
+        bound = 2.0 * (1e-9 * diag + _C_ROUND * big)
     return _apart(PA, PB, bound)
 
 

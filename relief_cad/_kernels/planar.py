@@ -124,7 +124,7 @@ def _root_resolution(HA: cython.const[cython.double][:, :], HB: cython.const[cyt
     """
     _ax, _ay, adx, ady, _a2, _a3 = _eval(HA, t, wa)
     _bx, _by, bdx, bdy, _b2, _b3 = _eval(HB, u, wb)
-    ulp: cython.double = 2.220446049250313e-16
+    ulp: cython.double = _C_EPS
     return 16.0 * rnd + 4.0 * ulp * (hypot(adx, ady) * max(abs(t), ulp) + hypot(bdx, bdy) * max(abs(u), ulp))
 
 
