@@ -731,8 +731,23 @@ def step_files(paths: Iterable[str | os.PathLike[str]]) -> list[Path]:
     return files
 
 
+def _flush_c_streams() -> None:
+    """Flush the C library's stdio buffers (OCCT prints through them), where there is a C library."""
+    import ctypes
+
+    try:
+        ctypes.CDLL(None).fflush(None)
+    except (OSError, AttributeError):  # pragma: no cover - no C library to ask (Windows)
+        pass
+
+
 def _quiet_fds() -> Any:
-    """A context manager sending C-level stdout/stderr to a temporary file, yielding it."""
+    """A context manager sending C-level stdout/stderr to a temporary file, yielding it.
+
+    The C library's buffers are flushed on the way in and out: OCCT prints through C stdio, which
+    buffers a pipe or a file in full (unless Python runs unbuffered, ``-u``), so its messages
+    came out after the file descriptors were restored, on the real stdout.
+    """
     import contextlib
     import sys
     import tempfile
@@ -741,6 +756,7 @@ def _quiet_fds() -> Any:
     def cm() -> Iterator[Any]:
         sys.stdout.flush()
         sys.stderr.flush()
+        _flush_c_streams()
         saved = [os.dup(1), os.dup(2)]
         with tempfile.TemporaryFile() as tmp:
             try:
@@ -748,6 +764,7 @@ def _quiet_fds() -> Any:
                 os.dup2(tmp.fileno(), 2)
                 yield tmp
             finally:
+                _flush_c_streams()
                 os.dup2(saved[0], 1)
                 os.dup2(saved[1], 2)
                 os.close(saved[0])

@@ -20,6 +20,9 @@ ROOT = Path(__file__).resolve().parents[2]
 
 def cli(*args, cwd=None):
     env = {**os.environ, "PYTHONPATH": os.pathsep.join([os.environ.get("PYTHONPATH", ""), str(ROOT)])}
+    # buffered, as a user runs it: with PYTHONUNBUFFERED (set on some machines) C stdio is
+    # unbuffered too, and OCCT's messages were caught where buffered they came out after
+    env.pop("PYTHONUNBUFFERED", None)
     proc = subprocess.run(
         [sys.executable, "-m", "relief_cad_workbench", *map(str, args)],
         capture_output=True,
