@@ -10,7 +10,6 @@ from __future__ import annotations
 import argparse
 import contextlib
 import importlib
-import signal
 import sys
 import tempfile
 import time
@@ -18,7 +17,13 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from ._signals import ctrl_c_in_finalizers_kept, raise_kept_ctrl_c, sigint_held
+from ._signals import (
+    command_done,
+    ctrl_c_in_finalizers_kept,
+    ctrl_c_until_done,
+    raise_kept_ctrl_c,
+    sigint_held,
+)
 
 __all__ = [
     "main",
@@ -463,14 +468,19 @@ def main(argv: list[str] | None = None) -> int:
             _preload()
         from relief_cad.errors import ReliefCadError
     except KeyboardInterrupt:
+        command_done()
         print("\ninterrupted before any work was done", file=sys.stderr)
         return EXIT_INTERRUPTED
     try:
-        return int(args.func(args))
+        status = int(args.func(args))
+        command_done()  # in this try: a Ctrl-C before it is handled below, one after is dropped
+        return status
     except (_Usage, ReliefCadError) as exc:
+        command_done()
         print(f"error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except KeyboardInterrupt:
+        command_done()
         print("\ninterrupted; run the same command again to resume", file=sys.stderr)
         return EXIT_INTERRUPTED
 
@@ -478,16 +488,15 @@ def main(argv: list[str] | None = None) -> int:
 def cli() -> None:
     """The console entry point: :func:`main`, then exit with its status.
 
-    Once the command is done, a Ctrl-C has nothing left to stop: it is ignored from then on, so
-    that one arriving while the interpreter shuts down (OCP's modules take a moment to unload)
-    cannot kill the process by the signal and hide the real exit status. One that comes while a
-    finalizer runs prints no traceback: the loops of compare and corpus raise it
-    (``ctrl_c_in_finalizers_kept``); after the work it has nothing to stop. A Ctrl-C before
-    ``main`` starts (while Python imports the standard library) is Python's own.
+    Once the command is done, a Ctrl-C has nothing left to stop: it is ignored from then on
+    (``ctrl_c_until_done``), also while the interpreter shuts down (OCP's modules take a moment
+    to unload), so it cannot kill the process by the signal and hide the real exit status. One
+    that comes while a finalizer runs prints no traceback: the loops of compare and corpus raise
+    it (``ctrl_c_in_finalizers_kept``). A Ctrl-C before ``main`` starts (while Python imports the
+    standard library) is Python's own.
     """
-    with ctrl_c_in_finalizers_kept():
+    with ctrl_c_in_finalizers_kept(), ctrl_c_until_done():
         status = main()
-        signal.signal(signal.SIGINT, signal.SIG_IGN)
     sys.exit(status)
 
 

@@ -12,9 +12,12 @@ import threading
 from collections.abc import Iterator
 from typing import Any
 
-__all__ = ["ctrl_c_in_finalizers_kept", "raise_kept_ctrl_c", "sigint_held"]
+__all__ = [
+    "command_done", "ctrl_c_in_finalizers_kept", "ctrl_c_until_done", "raise_kept_ctrl_c", "sigint_held",
+]
 
 _KEPT: list[int] = []  # Ctrl-Cs that came while a finalizer ran (see ctrl_c_in_finalizers_kept)
+_DONE = [False]  # the command's work is done (see ctrl_c_until_done)
 
 
 @contextlib.contextmanager
@@ -100,3 +103,43 @@ def raise_kept_ctrl_c() -> None:
     if _KEPT:
         _KEPT.clear()
         raise KeyboardInterrupt
+
+
+def command_done() -> None:
+    """Mark the command's work done: from here a Ctrl-C has nothing to stop (:func:`ctrl_c_until_done`)."""
+    _DONE[0] = True
+
+
+def _interrupt_until_done(signum: int, frame: Any) -> None:
+    if not _DONE[0]:
+        raise KeyboardInterrupt
+
+
+@contextlib.contextmanager
+def ctrl_c_until_done() -> Iterator[None]:
+    """A Ctrl-C stops the command until :func:`command_done`; from then on it is ignored.
+
+    The command calls :func:`command_done` inside its own ``try`` that handles a Ctrl-C, so no
+    Ctrl-C falls between the two: one before is the command's, one after is dropped, even one
+    already pending. (Ignoring it once the command had returned left a few instructions between
+    its end and the ignoring, where a Ctrl-C raised a KeyboardInterrupt with a traceback and
+    exit status -2.) At the end of the block Ctrl-C is ignored for good: Python's shutdown would
+    give it back its default action, killing the process and hiding the exit status.
+
+    >>> import os
+    >>> before = signal.getsignal(signal.SIGINT)
+    >>> with ctrl_c_until_done():
+    ...     command_done()
+    ...     os.kill(os.getpid(), signal.SIGINT)  # nothing left to stop: nothing raised
+    ...     print("finished")
+    finished
+    >>> signal.getsignal(signal.SIGINT) is signal.SIG_IGN
+    True
+    >>> _ = signal.signal(signal.SIGINT, before)
+    """
+    _DONE[0] = False
+    signal.signal(signal.SIGINT, _interrupt_until_done)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, signal.SIG_IGN)

@@ -219,3 +219,43 @@ def test_a_ctrl_c_kept_from_a_finalizer_stops_corpus_and_keeps_the_old_file(tmp_
             signal.signal(signal.SIGINT, old)
         status = main(["corpus", str(out), "--families", "cubic", "--count", "50"])
     assert status == EXIT_INTERRUPTED and out.read_bytes() == before
+
+
+def _ctrl_c_now() -> None:
+    os.kill(os.getpid(), signal.SIGINT)
+    for _ in range(2000):  # the handler runs within a few ms, here
+        time.sleep(0.001)
+
+
+def test_a_ctrl_c_stops_the_command_until_it_is_done_and_is_dropped_after() -> None:
+    """Ignoring Ctrl-C once main had returned left a few instructions where one came as a
+    KeyboardInterrupt out of the console entry point: a traceback and exit status -2."""
+    from relief_cad_workbench._signals import command_done, ctrl_c_until_done
+
+    before = signal.getsignal(signal.SIGINT)
+    try:
+        with ctrl_c_until_done():
+            with pytest.raises(KeyboardInterrupt):
+                _ctrl_c_now()  # the command's work: stopped
+            command_done()
+            _ctrl_c_now()  # done: nothing raised
+            signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+            os.kill(os.getpid(), signal.SIGINT)  # pending as the block ends
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})  # delivered now: ignored
+        assert signal.getsignal(signal.SIGINT) is signal.SIG_IGN
+        _ctrl_c_now()  # and so to the process's end
+    finally:
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
+        signal.signal(signal.SIGINT, before)
+
+
+def test_main_marks_its_command_done_on_every_way_out(tmp_path, capsys) -> None:
+    from relief_cad_workbench import _signals
+    from relief_cad_workbench.__main__ import EXIT_BAD_INPUT, main
+
+    for argv, status in ((["corpus", str(tmp_path / "c.jsonl"), "--families", "cubic", "--count", "2"], EXIT_OK),
+                         (["compare", str(tmp_path / "missing.jsonl"), "--out", str(tmp_path / "o")],
+                          EXIT_BAD_INPUT)):
+        _signals._DONE[0] = False
+        assert main(argv) == status
+        assert _signals._DONE[0], argv
