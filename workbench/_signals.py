@@ -1,6 +1,8 @@
-"""Ctrl-C held through a block, or kept from a finalizer: the one home of the workbench's signal handling.
+"""The one home of the workbench's Ctrl-C handling (no heavy imports here).
 
-No heavy imports here.
+A Ctrl-C is held through a block (:func:`sigint_held`), kept when it comes while a finalizer runs
+(:func:`ctrl_c_in_finalizers_kept`), and stops a command until the command is done
+(:func:`ctrl_c_until_done`).
 """
 
 from __future__ import annotations
