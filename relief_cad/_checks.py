@@ -24,6 +24,7 @@ import os
 from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
+from numpy.typing import NDArray
 
 from ._types import FloatArray
 from .errors import (
@@ -46,8 +47,11 @@ __all__ = [
     "MAX_DEGREE",
     "MAX_WEIGHT_RATIO",
     "OnBudget",
+    "as_index_array",
     "as_real_array",
     "check_degree",
+    "check_distance",
+    "check_flag",
     "check_finite",
     "check_param",
     "check_span",
@@ -141,17 +145,59 @@ def check_tol(tol: Any, name: str = "tol") -> float | None:
     """
     if tol is None:
         return None
-    if not _is_real(tol):
-        raise ToleranceTypeError(
-            f"{name} should be a distance > 0 in model units (a float), not {type(tol).__name__}")
-    try:
-        value = float(tol)
-    except OverflowError as exc:
-        raise ToleranceError(f"{name} should be a finite distance > 0 in model units, "
-                             f"not an integer of {len(str(abs(int(tol))))} digits") from exc
-    if not math.isfinite(value) or value <= 0.0:
-        raise ToleranceError(f"{name} should be a finite distance > 0 in model units, not {value!r}")
+    value = _distance(tol, name, False)
     return tol if isinstance(tol, ModelTolerance) else value  # a model's tolerance keeps its type
+
+
+def _distance(value: Any, name: str, zero_ok: bool) -> float:
+    """``value`` as a float distance in model units, finite and > 0 (``>= 0`` with ``zero_ok``)."""
+    least = ">= 0" if zero_ok else "> 0"
+    if not _is_real(value):
+        raise ToleranceTypeError(
+            f"{name} should be a distance {least} in model units (a float), not {type(value).__name__}")
+    try:
+        out = float(value)
+    except OverflowError as exc:
+        raise ToleranceError(f"{name} should be a finite distance {least} in model units, "
+                             f"not an integer of {len(str(abs(int(value))))} digits") from exc
+    if not (math.isfinite(out) and (out >= 0.0 if zero_ok else out > 0.0)):
+        raise ToleranceError(f"{name} should be a finite distance {least} in model units, not {out!r}")
+    return out
+
+
+def check_distance(value: Any, name: str) -> float:
+    """Return a distance that may be zero (a widening, a padding) as a float in model units.
+
+    Raises
+    ------
+    ToleranceTypeError
+        If ``value`` is not a real number (``None``, ``bool``, ``str``, an array ...).
+    ToleranceError
+        If ``value`` is negative, NaN, infinite or an integer too large for a float.
+
+    Examples
+    --------
+    >>> check_distance(0, "pad")
+    0.0
+    >>> check_distance(-1e-3, "pad")
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ToleranceError: pad should be a finite distance >= 0 in model units, not -0.001
+    """
+    return _distance(value, name, True) + 0.0  # -0.0 becomes 0.0
+
+
+def check_flag(value: Any, name: str) -> bool:
+    """Return a yes/no option as a bool; refuse anything but ``True``, ``False`` (or numpy's bools).
+
+    >>> check_flag("no", "perpendicular")
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InputTypeError: perpendicular should be True or False, not str
+    """
+    if not isinstance(value, (bool, np.bool_)):
+        raise InputTypeError(f"{name} should be True or False, not {type(value).__name__}")
+    return bool(value)
 
 
 def check_budget(budget: Any) -> int:
@@ -202,6 +248,9 @@ def check_on_budget(on_budget: Any) -> OnBudget:
     raise InvalidInputError(f"on_budget should be 'raise' or 'return', not {on_budget!r}")
 
 
+_KIND_NAMES = {"U": "str", "S": "bytes", "c": "complex", "b": "bool", "O": "object"}  # numpy kinds, named
+
+
 def _array_kind_error(arr: np.ndarray[Any, Any], name: str) -> InputTypeError | None:
     """The error for an array of strings, complex numbers, booleans or other objects, else None."""
     kind = arr.dtype.kind
@@ -213,7 +262,7 @@ def _array_kind_error(arr: np.ndarray[Any, Any], name: str) -> InputTypeError | 
             return None
         what = type(bad[0]).__name__
     else:
-        what = {"U": "str", "S": "bytes", "c": "complex", "b": "bool"}.get(kind, str(arr.dtype))
+        what = _KIND_NAMES.get(kind, str(arr.dtype))
     return InputTypeError(f"{name} should be an array of real numbers, not of {what}")
 
 
@@ -259,6 +308,39 @@ def as_real_array(value: Any, name: str) -> FloatArray:
     except OverflowError as exc:
         raise NonFiniteError(f"{name} should be finite numbers; an integer is too large "
                              "for a float") from exc
+
+
+def as_index_array(value: Any, name: str) -> NDArray[np.int64]:
+    """Return ``value`` as a C-ordered int64 array of indices; refuse floats, bools, strings, objects.
+
+    An index is an integer, as numpy's own indexing asks: a float array (even of whole numbers)
+    is refused rather than truncated. An empty sequence is taken whatever its dtype.
+
+    Raises
+    ------
+    InputTypeError
+        For a ragged or non-numeric value, or entries that are not integers.
+
+    Examples
+    --------
+    >>> as_index_array([0, 2, 4], "offsets").tolist()
+    [0, 2, 4]
+    >>> as_index_array([0.5, 2.0], "offsets")
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InputTypeError: offsets should be an array of integers (indices), not of float64
+    """
+    try:
+        raw = np.asarray(value)
+    except (TypeError, ValueError) as exc:
+        raise InputTypeError(f"{name} should be an array of integers (indices), not a ragged or "
+                             f"non-numeric {type(value).__name__}") from exc
+    if raw.size and raw.dtype.kind not in "iu":
+        what = _KIND_NAMES.get(raw.dtype.kind, str(raw.dtype))
+        raise InputTypeError(f"{name} should be an array of integers (indices), not of {what}")
+    if raw.dtype.kind == "u" and raw.size and int(raw.max()) > np.iinfo(np.int64).max:
+        raise InvalidInputError(f"{name} should be indices below 2**63, not {int(raw.max())}")
+    return np.ascontiguousarray(raw, dtype=np.int64)
 
 
 def check_finite(arr: FloatArray, name: str) -> None:
