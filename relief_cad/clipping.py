@@ -32,7 +32,18 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import NDArray
 
-from ._checks import check_tol, check_workers
+from ._checks import (
+    DEFAULT_BUDGET,
+    as_index_array,
+    as_real_array,
+    check_budget,
+    check_distance,
+    check_finite,
+    check_flag,
+    check_tol,
+    check_weights,
+    check_workers,
+)
 from ._kernels import (
     clip_range_kernel,
     fat_line_kernel,
@@ -43,7 +54,7 @@ from ._pool import run_ordered
 from ._types import FloatArray
 from .contacts import range_exponent
 from .curves import RationalBezier
-from .errors import InvalidInputError, NonFiniteError, ShapeError, WeightError
+from .errors import ShapeError, ToleranceError, WeightError
 from .tolerances import _default_tolerances, resolve_tolerance
 
 __all__ = [
@@ -61,11 +72,36 @@ RESULT_COLUMNS: tuple[str, ...] = ("pair", "kind", "t", "u", "t1", "u1", "x", "y
 (``t..t1``, ``u..u1``), 3 unresolved box (``t..t1`` x ``u..u1``)."""
 
 
-def _points(nodes: FloatArray, name: str = "nodes") -> FloatArray:
-    arr = np.ascontiguousarray(nodes, dtype=np.float64)
+def _points(nodes: object, name: str = "nodes") -> FloatArray:
+    """``nodes`` as a new float64 array of shape (m + 1, 2), m >= 1, of finite numbers (checked)."""
+    arr = as_real_array(nodes, name)
     if arr.ndim != 2 or arr.shape[1] != 2 or arr.shape[0] < 2:
         raise ShapeError(f"{name} should have shape (m + 1, 2) with m >= 1, not {arr.shape}")
+    check_finite(arr, name)
     return arr
+
+
+def _weights(weights: object, n: int, name: str = "weights") -> FloatArray:
+    """The weights of ``n`` control points: ``None`` gives ones; else (n,) finite, > 0 (checked)."""
+    if weights is None:
+        return np.ones(n)
+    w = as_real_array(weights, name)
+    if w.shape != (n,):
+        raise ShapeError(f"{name} should have shape ({n},), one per control point, not {w.shape}")
+    check_finite(w, name)
+    check_weights(w, name)
+    return w
+
+
+def _line(line: object) -> tuple[float, float, float, float, float]:
+    """A fat line ``(nx, ny, c, dmin, dmax)`` of five finite numbers (checked)."""
+    arr = as_real_array(line, "line")
+    if arr.shape != (5,):
+        raise ShapeError(f"line should be the five numbers (nx, ny, c, dmin, dmax) of compute_fat_line, "
+                         f"not shape {arr.shape}")
+    check_finite(arr, "line")
+    nx, ny, c, dmin, dmax = (float(v) for v in arr)
+    return nx, ny, c, dmin, dmax
 
 
 def compute_fat_line(nodes: FloatArray, *, perpendicular: bool = False
@@ -94,10 +130,11 @@ def compute_fat_line(nodes: FloatArray, *, perpendicular: bool = False
     (0.0, 1.0, -1.0, 0.0, 0.0)
     """
     pts = _points(nodes)
+    perp = check_flag(perpendicular, "perpendicular")
     # the kernel squares distances (its own callers pass a normalised frame): coordinates out of
     # the safe range are scaled by a power of two first (exact), the offsets scaled back
     exp = range_exponent(float(np.max(np.abs(pts))))
-    nx, ny, c, dmin, dmax = fat_line_kernel(np.ldexp(pts, -exp) if exp else pts, perpendicular)
+    nx, ny, c, dmin, dmax = fat_line_kernel(np.ldexp(pts, -exp) if exp else pts, perp)
     c, dmin, dmax = math.ldexp(c, exp), math.ldexp(dmin, exp), math.ldexp(dmax, exp)
     # (+ 0.0 turns a -0.0 into 0.0)
     return float(nx) + 0.0, float(ny) + 0.0, float(c) + 0.0, float(dmin) + 0.0, float(dmax) + 0.0
@@ -133,10 +170,11 @@ def distance_coefficients(nodes: FloatArray, weights: FloatArray | None,
     ([3.0, -2.0, 3.0], [-2.0, 4.0, -2.0])
     """
     p = _points(nodes)
-    w = np.ones(p.shape[0]) if weights is None else np.asarray(weights, dtype=np.float64)
-    nx, ny, c, dmin, dmax = line
+    w = _weights(weights, p.shape[0])
+    nx, ny, c, dmin, dmax = _line(line)
+    widen = check_distance(tol, "tol")
     d = p @ np.array([nx, ny]) + c
-    return w * (d - (dmin - tol)), w * ((dmax + tol) - d)
+    return w * (d - (dmin - widen)), w * ((dmax + widen) - d)
 
 
 def hull_range(coefficients: FloatArray) -> tuple[float, float]:
@@ -151,9 +189,10 @@ def hull_range(coefficients: FloatArray) -> tuple[float, float]:
     >>> hull_range(np.array([-1.0, -2.0, -1.0]))
     (inf, -inf)
     """
-    e = np.ascontiguousarray(coefficients, dtype=np.float64)
+    e = as_real_array(coefficients, "coefficients")
     if e.ndim != 1 or e.shape[0] < 2:
         raise ShapeError(f"coefficients should have shape (m + 1,) with m >= 1, not {e.shape}")
+    check_finite(e, "coefficients")
     lo, hi = hull_range_kernel(e)
     return float(lo), float(hi)
 
@@ -187,16 +226,15 @@ def clip_range(nodes: FloatArray, weights: FloatArray | None,
     True
     """
     p = _points(nodes)
-    w = np.ones(p.shape[0]) if weights is None else np.ascontiguousarray(weights, dtype=np.float64)
-    if w.shape != (p.shape[0],):
-        raise ShapeError(f"weights should have shape ({p.shape[0]},), not {w.shape}")
-    nx, ny, c, dmin, dmax = (float(v) for v in line)
-    lo, hi = clip_range_kernel(p, w, nx, ny, c, dmin - tol, dmax + tol, np.empty(p.shape[0]))
+    w = _weights(weights, p.shape[0])
+    nx, ny, c, dmin, dmax = _line(line)
+    widen = check_distance(tol, "tol")
+    lo, hi = clip_range_kernel(p, w, nx, ny, c, dmin - widen, dmax + widen, np.empty(p.shape[0]))
     return float(lo), float(hi)
 
 
-def intersect_packed(points: FloatArray, weights: FloatArray, offsets: FloatArray, pairs: FloatArray,
-                     tol: float | None = None, budget: int = 500_000, *,
+def intersect_packed(points: FloatArray, weights: FloatArray, offsets: NDArray[np.int64],
+                     pairs: NDArray[np.int64], tol: float | None = None, budget: int = DEFAULT_BUDGET, *,
                      workers: int | None = None) -> FloatArray:
     """Intersect many planar curve pairs given as packed arrays; return raw result rows.
 
@@ -209,14 +247,15 @@ def intersect_packed(points: FloatArray, weights: FloatArray, offsets: FloatArra
     weights : ndarray, shape (N,)
         Their weights (> 0).
     offsets : ndarray of int, shape (c + 1,)
-        Curve ``k`` is rows ``offsets[k]:offsets[k + 1]`` (at least 2 rows each).
+        Curve ``k`` is rows ``offsets[k]:offsets[k + 1]`` (at least 2 rows each); an integer
+        array (a float array is refused, not truncated).
     pairs : ndarray of int, shape (p, 2)
-        Curve indices of each pair.
+        Curve indices of each pair (integers, as ``offsets``).
     tol : float, optional
         Distance tolerance for every pair (default: each pair's default tolerance); raised to
         each pair's rounding floor (:func:`relief_cad.tolerances.resolve_tolerance`).
     budget : int
-        Iteration budget per pair.
+        Iteration budget per pair (default 500 000, as for :func:`relief_cad.intersect`).
     workers : int, keyword-only
         Threads the pairs run on (:func:`batch_rows`); default: every core. The rows are
         the same for any number.
@@ -228,37 +267,87 @@ def intersect_packed(points: FloatArray, weights: FloatArray, offsets: FloatArra
         pair, points and overlaps by ``t`` (an overlap by its first ``t``), then the
         unresolved boxes.
 
+    Raises
+    ------
+    InputTypeError
+        If an array holds anything but real numbers (``offsets`` and ``pairs``: integers), or
+        ``budget`` or ``workers`` is not an int.
+    ShapeError
+        If the arrays' shapes do not fit, ``offsets`` does not run from 0 to N giving each curve
+        at least 2 rows, or ``pairs`` names a curve that is not there.
+    NonFiniteError, WeightError, ToleranceError, InvalidInputError
+        For a point or weight that is not finite, a weight <= 0 (or a curve's weights' max /
+        min above :data:`~relief_cad._checks.MAX_WEIGHT_RATIO`), a bad ``tol``, a budget < 1.
+
     Examples
     --------
     >>> pts = np.array([[0.0, 0.0], [2.0, 2.0], [0.0, 2.0], [2.0, 0.0]])
     >>> rows = intersect_packed(pts, np.ones(4), np.array([0, 2, 4]), np.array([[0, 1]]))
     >>> rows[:, :4].tolist()
     [[0.0, 0.0, 0.5, 0.5]]
+    >>> intersect_packed(pts, np.ones(4), np.array([0.0, 2.0, 4.0]), np.array([[0, 1]]))
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InputTypeError: offsets should be an array of integers (indices), not of float64
     """
-    p = np.ascontiguousarray(points, dtype=np.float64)
-    w = np.ascontiguousarray(weights, dtype=np.float64)
-    off = np.ascontiguousarray(offsets, dtype=np.int64)
-    pr = np.ascontiguousarray(pairs, dtype=np.int64)
-    if p.ndim != 2 or p.shape[1] != 2 or w.shape != (p.shape[0],):
-        raise ShapeError(f"points should be (N, 2) and weights (N,), not {p.shape} and {w.shape}")
-    if off.ndim != 1 or off.shape[0] < 2 or off[0] != 0 or off[-1] != p.shape[0] or np.any(np.diff(off) < 2):
-        raise ShapeError("offsets should start at 0, end at N and give every curve >= 2 control points")
-    if pr.ndim != 2 or pr.shape[1] != 2 or (pr.size and (pr.min() < 0 or pr.max() >= off.shape[0] - 1)):
-        raise ShapeError(f"pairs should be (p, 2) indices of curves, not shape {pr.shape}")
-    if not (np.all(np.isfinite(p)) and np.all(np.isfinite(w))):
-        raise NonFiniteError("points and weights should be finite")
-    if not np.all(w > 0.0):
-        raise WeightError("weights should all be > 0")
+    p, w, off, pr = _packed(points, weights, offsets, pairs)
     given = check_tol(tol)
-    if budget < 1:
-        raise InvalidInputError(f"budget should be >= 1, not {budget}")
-    p = p.view()  # read-only views (the kernels are compiled for read-only inputs);
-    w = w.view()  # the caller's arrays stay writeable
-    p.flags.writeable = False
-    w.flags.writeable = False
+    nbudget = check_budget(budget)
     nworkers = check_workers(workers)
     # each chunk's tolerances are computed on its own thread (without the GIL for the default)
-    return batch_rows(p, w, off, pr, _pair_tolerances(p, w, off, pr, given), int(budget), nworkers)
+    return _batch_rows(p, w, off, pr, _pair_tolerances(p, w, off, pr, given), nbudget, nworkers)
+
+
+def _packed(points: object, weights: object, offsets: object, pairs: object
+            ) -> tuple[FloatArray, FloatArray, NDArray[np.int64], NDArray[np.int64]]:
+    """The packed arrays of :func:`intersect_packed`, checked: ``(P, W, offsets, pairs)``.
+
+    ``P`` and ``W`` are new read-only float64 arrays, ``offsets`` and ``pairs`` C-ordered int64
+    (an empty ``pairs`` of any shape is ``(0, 2)``). Every index the kernels read is checked
+    here: they do no bounds checks.
+    """
+    p = as_real_array(points, "points")
+    w = as_real_array(weights, "weights")
+    if p.ndim != 2 or p.shape[1] != 2 or w.shape != (p.shape[0],):
+        raise ShapeError(f"points should be (N, 2) and weights (N,), not {p.shape} and {w.shape}")
+    check_finite(p, "points")
+    check_finite(w, "weights")
+    off = as_index_array(offsets, "offsets")
+    if off.ndim != 1 or off.shape[0] < 2 or off[0] != 0 or off[-1] != p.shape[0] or np.any(np.diff(off) < 2):
+        raise ShapeError("offsets should start at 0, end at N and give every curve >= 2 control points")
+    _check_curve_weights(w, off)
+    pr = as_index_array(pairs, "pairs")
+    if pr.size == 0:
+        pr = pr.reshape(0, 2)
+    if pr.ndim != 2 or pr.shape[1] != 2 or (pr.size and (pr.min() < 0 or pr.max() >= off.shape[0] - 1)):
+        raise ShapeError(f"pairs should be (p, 2) indices of the {off.shape[0] - 1} curves, "
+                         f"not shape {pr.shape} from {pr.min(initial=0)} to {pr.max(initial=0)}")
+    p.flags.writeable = False  # new arrays (the caller's stay as they are): the kernels read them
+    w.flags.writeable = False
+    return p, w, off, pr
+
+
+def _check_curve_weights(w: FloatArray, off: NDArray[np.int64]) -> None:
+    """Refuse a weight <= 0, or a curve whose weights' max / min exceeds the ratio a curve may have."""
+    if not np.all(w > 0.0):
+        i = int(np.argmin(w > 0.0))
+        raise WeightError(f"weights should all be > 0; weight {i} is {float(w[i])!r}")
+    ratio = np.maximum.reduceat(w, off[:-1]) / np.minimum.reduceat(w, off[:-1])
+    worst = int(np.argmax(ratio))
+    check_weights(w[off[worst]:off[worst + 1]], f"the weights of curve {worst}")
+
+
+def _checked_tols(tols: object, n: int) -> FloatArray:
+    """``n`` pair tolerances (model units, finite, > 0) as a float64 array (checked)."""
+    t = as_real_array(tols, "tols")
+    if t.shape != (n,):
+        raise ShapeError(f"tols should have shape ({n},), one per pair, not {t.shape}")
+    good = np.isfinite(t) & (t > 0.0)
+    if not np.all(good):
+        k = int(np.argmin(good))
+        raise ToleranceError(f"tols should be finite distances > 0 in model units; tols[{k}] is "
+                             f"{float(t[k])!r}")
+    return t
 
 
 _MIN_CHUNK = 256  # pairs per thread, at least: below that a thread costs more than it gains
@@ -269,10 +358,10 @@ def batch_rows(points: FloatArray, weights: FloatArray, offsets: NDArray[np.int6
                workers: int | None = None) -> FloatArray:
     """Run the batch kernel on packed pairs, split into chunks over ``workers`` threads: all rows.
 
-    The arrays are those of :func:`intersect_packed`, already checked (``points`` and
-    ``weights`` read-only); ``tols`` holds each pair's tolerance (model units), or is a function
-    giving those of pairs ``lo`` to ``hi - 1`` as ``tols(lo, hi)``, called once per chunk on the
-    chunk's thread; ``workers`` None is every core. The kernel runs without the GIL, so the
+    The arrays are those of :func:`intersect_packed` (checked as there); ``tols`` holds each
+    pair's tolerance (model units, finite, > 0), or is a function giving those of pairs ``lo`` to
+    ``hi - 1`` as ``tols(lo, hi)``, called once per chunk on the chunk's thread (its answers are
+    checked too); ``workers`` None is every core. The kernel runs without the GIL, so the
     chunks run at once; their rows are joined in pair order (column 0 indexes ``pairs``), the
     same rows for any ``workers``. An exception is that of the first chunk, in order, that raised.
 
@@ -285,6 +374,20 @@ def batch_rows(points: FloatArray, weights: FloatArray, offsets: NDArray[np.int6
     >>> rows.shape, rows[-1, :4].tolist()
     ((600, 9), [599.0, 0.0, 0.5, 0.5])
     """
+    p, w, off, pr = _packed(points, weights, offsets, pairs)
+    nbudget = check_budget(budget)
+    nworkers = check_workers(workers)
+    if callable(tols):
+        given = tols
+        return _batch_rows(p, w, off, pr, lambda lo, hi: _checked_tols(given(lo, hi), hi - lo), nbudget,
+                           nworkers)
+    return _batch_rows(p, w, off, pr, _checked_tols(tols, pr.shape[0]), nbudget, nworkers)
+
+
+def _batch_rows(points: FloatArray, weights: FloatArray, offsets: NDArray[np.int64], pairs: NDArray[np.int64],
+                tols: FloatArray | Callable[[int, int], FloatArray], budget: int,
+                workers: int | None = None) -> FloatArray:
+    """:func:`batch_rows` on arrays already checked (relief_cad's own callers): no check of them."""
     n = pairs.shape[0]
     threads = 1 if n < 2 * _MIN_CHUNK else check_workers(workers)  # a few pairs: no pool
     size = n if threads <= 1 else max(_MIN_CHUNK, -(-n // threads))

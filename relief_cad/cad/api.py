@@ -49,7 +49,7 @@ from OCP.TopExp import TopExp
 from .._kernels import KIND_CROSSING, KIND_TANGENT, KIND_UNRESOLVED
 from .._kernels.bezier import affine_rows
 from ..broadphase import box_pairs, box_pairs_between
-from ..clipping import batch_rows
+from ..clipping import _batch_rows
 from ..curves import RationalBezier
 from ..errors import InvalidInputError
 from ..intersection import DEFAULT_BUDGET
@@ -674,7 +674,7 @@ def _batch_found(
     rows: list[list[float]] = []
     if which:
         run = pairs if len(which) == pairs.shape[0] else pairs[which]
-        rows = batch_rows(P, W, offsets, run, np.full(len(which), tol), DEFAULT_BUDGET).tolist()  # every core
+        rows = _batch_rows(P, W, offsets, run, np.full(len(which), tol), DEFAULT_BUDGET).tolist()  # all cores
     out: list[list[_Found] | None] = [None] * pairs.shape[0]
     for k in which:
         out[k] = []
