@@ -65,6 +65,7 @@ SANITIZED_TESTS = [
     "tests/functional/test_contact_corpus.py", "tests/functional/test_planar_corpus.py",
     "tests/core/test_pool.py",  # pack_pairs writes the batch's curves into a growing buffer
     "tests/core/test_affine_rows.py",  # affine_rows writes into a caller's array, possibly its input
+    "tests/core/test_inputs_clipping.py",  # bad packed arrays must be refused before the kernels read them
 ]
 # what those tests import (pyproject's test extra without the workbench and CAD parts), and the build
 SANITIZED_DEPS = ["numpy>=1.26", "cython>=3.1", "setuptools>=77", "pytest>=8", "pytest-timeout>=2.2",
