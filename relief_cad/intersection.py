@@ -127,7 +127,9 @@ def _ro(arr: FloatArray) -> FloatArray:
 def _planar(pa: FloatArray, wa: FloatArray, pb: FloatArray, wb: FloatArray, tol: float,
             budget: int) -> IntersectionList:
     """Run the pair kernel on arrays made read-only C float64 first."""
-    return rows_to_list(intersect_one_kernel(_ro(pa), _ro(wa), _ro(pb), _ro(wb), tol, budget), tol)[0]
+    rows = intersect_one_kernel(_ro(pa), _ro(wa), _ro(pb), _ro(wb), tol, budget)
+    res: IntersectionList = rows_to_list(rows, tol)[0]
+    return res
 
 
 def _refined(a: RationalBezier, b: RationalBezier, res: IntersectionList, tol: float) -> IntersectionList:

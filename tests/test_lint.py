@@ -1,4 +1,4 @@
-"""ruff and mypy (strict) must be clean on the package: run as part of the test suite."""
+"""ruff and mypy (strict) must be clean on the package and the workbench: run as part of the test suite."""
 
 from __future__ import annotations
 
@@ -18,6 +18,6 @@ def test_ruff_clean() -> None:
     assert result.returncode == 0, result.stdout + result.stderr
 
 
-def test_mypy_strict_clean_on_relief_cad() -> None:
-    result = run("mypy", "relief_cad")
+def test_mypy_strict_clean_on_relief_cad_and_the_workbench() -> None:
+    result = run("mypy", "relief_cad", "workbench")
     assert result.returncode == 0, result.stdout + result.stderr

@@ -29,6 +29,7 @@ import math
 import os
 import time
 from collections.abc import Callable
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -57,7 +58,8 @@ def _glyphs(n: int) -> list[Any]:
         for face in sorted(glyphs.faces(), key=_place):
             edges.extend(e.wrapped for e in face.edges())
         for k in range(20):
-            pts = [bd.Vector(x, y0 - 6 + 0.6 * k + 0.8 * math.sin(0.7 * x + k)) for x in range(-60, 65, 5)]
+            pts: list[bd.VectorLike] = [bd.Vector(x, y0 - 6 + 0.6 * k + 0.8 * math.sin(0.7 * x + k))
+                                        for x in range(-60, 65, 5)]
             edges.append(bd.Edge.make_spline(pts).wrapped)
         line += 1
     return edges[:n]
@@ -172,7 +174,7 @@ def _extent(edges: list[Any]) -> float:
 def cases(sizes: tuple[int, ...] = DEFAULT_SIZES) -> list[tuple[str, int, Callable[[], list[Any]]]]:
     """``(family, size, make_edges)`` for every benchmark case."""
     families: dict[str, Callable[[int], list[Any]]] = {"glyphs": _glyphs, "fillets": _fillets, "step": _step}
-    return [(name, n, (lambda f=f, n=n: f(n))) for name, f in families.items() for n in sizes]
+    return [(name, n, partial(f, n)) for name, f in families.items() for n in sizes]
 
 
 # --------------------------------------------------------------------------- the two sides
@@ -265,7 +267,8 @@ def _spread(points: np.ndarray, limit: int) -> np.ndarray:
     """
     if len(points) <= limit:
         return points
-    return points[np.unique(np.linspace(0, len(points) - 1, limit).round().astype(int))]
+    out: np.ndarray = points[np.unique(np.linspace(0, len(points) - 1, limit).round().astype(int))]
+    return out
 
 
 def _edge_boxes(edges: list[Any]) -> tuple[np.ndarray, np.ndarray]:
@@ -290,7 +293,7 @@ def _real_vertex(edges: list[Any], boxes: tuple[np.ndarray, np.ndarray], p: np.n
     from relief_cad.cad import arbitrate_point
 
     near = [edges[j] for _, j in box_pairs_between([p], [p], *boxes, pad=tol).tolist()]
-    params = []
+    params: list[tuple[Any, float]] = []
     for e in near:
         t0, t1 = BRep_Tool.Range_s(e)
         ends = [np.array(BRep_Tool.Pnt_s(v).Coord()) for v in _end_vertices(e)]

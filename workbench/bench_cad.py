@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable
+from functools import partial
 from typing import Any
 
 __all__ = ["run", "pairs", "conversion_edges"]
@@ -44,6 +45,11 @@ def _time(f: Callable[[], Any], repeat: int, budget_s: float = 0.5) -> float:
             f()
         best = min(best, (time.perf_counter() - t0) / number)
     return best * 1e6
+
+
+def _vertex_count(shape: Any) -> int:
+    """The vertices of build123d's ``Edge.intersect`` answer (0 for None)."""
+    return 0 if shape is None else len(shape.vertices())
 
 
 def _count_and_time(f: Callable[[], Any], count: Callable[[Any], int], repeat: int) -> tuple[Any, Any]:
@@ -147,11 +153,9 @@ def run(repeat: int = 200, occt_repeat: int = 20) -> dict[str, Any]:
     cq = _cadquery()
     rows: list[dict[str, Any]] = []
     for name, (a, b) in pairs().items():
-        relief_pts, relief_us = _count_and_time(lambda a=a, b=b: rc.intersect(a, b), len, repeat)
-        find_pts, find_us = _count_and_time(lambda a=a, b=b: a.find_intersection_points(b), len, occt_repeat)
-        inter_pts, inter_us = _count_and_time(
-            lambda a=a, b=b: a.intersect(b), lambda r: 0 if r is None else len(r.vertices()), occt_repeat
-        )
+        relief_pts, relief_us = _count_and_time(partial(rc.intersect, a, b), len, repeat)
+        find_pts, find_us = _count_and_time(partial(a.find_intersection_points, b), len, occt_repeat)
+        inter_pts, inter_us = _count_and_time(partial(a.intersect, b), _vertex_count, occt_repeat)
         cq_pts, cq_us = _cq_split(cq, a, b, occt_repeat)
         rows.append(
             {
@@ -175,7 +179,7 @@ def run(repeat: int = 200, occt_repeat: int = 20) -> dict[str, Any]:
             {
                 "pair": f"convert:{name}",
                 "segments": len(rc.segments(raw)),
-                "relief_us": _time(lambda raw=raw: rc.segments(raw), 20 * repeat),
+                "relief_us": _time(partial(rc.segments, raw), 20 * repeat),
             }
         )
     note = "measured" if cq is not None else "not measured: CadQuery is not installed here (it needs OCP 7.9)"

@@ -17,6 +17,7 @@ import subprocess
 import sys
 import time
 from collections.abc import Callable
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -118,6 +119,11 @@ def cases() -> dict[str, list[tuple[RationalBezier, RationalBezier]]]:
     return out
 
 
+def _each(fn: Callable[[Any, Any], Any], pairs: list[tuple[Any, Any]]) -> list[Any]:
+    """``fn(a, b)`` for every pair, in order."""
+    return [fn(a, b) for a, b in pairs]
+
+
 def _time(fn: Callable[[], Any], repeat: int) -> float:
     best = float("inf")
     for _ in range(repeat):
@@ -153,8 +159,8 @@ def _per_pair_ratios(pairs: list[tuple[RationalBezier, RationalBezier]], occ: li
     """relief / OCCT time ratio of every pair on its own (best of 3 each)."""
     out = []
     for (a, b), (ca, cb) in zip(pairs, occ, strict=True):
-        t_rel = _time(lambda a=a, b=b: intersect(a, b), 3)
-        t_occ = _time(lambda ca=ca, cb=cb: occt_intersect(ca, cb), 3)
+        t_rel = _time(partial(intersect, a, b), 3)
+        t_occ = _time(partial(occt_intersect, ca, cb), 3)
         out.append(t_rel / t_occ)
     return out
 
@@ -192,15 +198,15 @@ def run(repeat: int = 5, batch: int = 2000) -> dict[str, Any]:
     and worst ratio of the random cubics timed pair by pair. Batch rates are on ``batch``
     random cubic pairs; the start-up figures come from a fresh interpreter.
     """
-    rows = []
+    rows: list[dict[str, Any]] = []
     random_ratios: list[float] = []
     for name, pairs in cases().items():
         occ = [(occt_curve(a), occt_curve(b)) for a, b in pairs]
         n_rel = sum(len(intersect(a, b)) for a, b in pairs)
         n_occ = sum(len(occt_intersect(ca, cb)) for ca, cb in occ)
         reps = repeat if len(pairs) > 10 else repeat * 50
-        t_rel = _time(lambda ps=pairs: [intersect(a, b) for a, b in ps], reps) / len(pairs)
-        t_occ = _time(lambda oc=occ: [occt_intersect(ca, cb) for ca, cb in oc], reps) / len(pairs)
+        t_rel = _time(partial(_each, intersect, pairs), reps) / len(pairs)
+        t_occ = _time(partial(_each, occt_intersect, occ), reps) / len(pairs)
         if len(pairs) > 10:
             random_ratios = _per_pair_ratios(pairs, occ)
         rows.append(

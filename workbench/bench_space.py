@@ -153,7 +153,7 @@ def run(min_seconds: float = 0.3) -> dict[str, Any]:
         issue's target of 0.05 is set on it), and ``found`` the number of results of each side
         (relief_cad, IntTools_EdgeEdge common parts, extrema within tol).
     """
-    rows = []
+    rows: list[dict[str, Any]] = []
     for name, pairs in cases().items():
         occ = [(occt_curve(a), occt_curve(b), occt_edge(a), occt_edge(b)) for a, b in pairs]
         def ours(pairs: list[tuple[RationalBezier, RationalBezier]] = pairs) -> int:

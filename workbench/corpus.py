@@ -714,7 +714,7 @@ def _conic_pair(kind: str, rng: np.random.Generator) -> tuple[Any, Any]:
         ang, rad = np.sort(rng.uniform(0, 2 * math.pi, n)), r1 * rng.uniform(0.6, 1.4, n)
         pts = [bd.Vector(float(r * math.cos(q)), float(r * math.sin(q)))
                for q, r in zip(ang, rad, strict=True)]
-        a = bd.Edge.make_spline(pts, periodic=True)
+        a = bd.Edge.make_spline([*pts], periodic=True)  # (a list of VectorLike for the type checker)
         tg = a.tangent_at(0.0) if rng.integers(0, 2) else bd.Vector(1.0, 0.0)
         b = bd.Edge.make_line(pts[0] - tg * 2 * r1, pts[0] + tg * 2 * r1)
     return a.moved(place), b.moved(place)
