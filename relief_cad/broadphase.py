@@ -20,12 +20,14 @@ grows with the number of places, not with the square of the points at one place.
 
 from __future__ import annotations
 
+import numbers
 from collections.abc import Sequence
 
 import numpy as np
 from numpy.typing import NDArray
 
-from .errors import InvalidInputError, ShapeError, ToleranceError
+from ._checks import as_index_array, as_real_array, check_distance, check_finite
+from .errors import InputTypeError, InvalidInputError, ShapeError
 
 __all__ = ["box_pairs", "box_pairs_between", "cluster_points"]
 
@@ -33,26 +35,43 @@ IntArray = NDArray[np.int64]
 FloatArray = NDArray[np.float64]
 
 
-def _boxes(lows: object, highs: object, name: str) -> tuple[FloatArray, FloatArray]:
-    """Check a set of boxes: two finite arrays of shape ``(n, dim)`` with ``lows <= highs``."""
-    lo = np.asarray(lows, dtype=np.float64)
-    hi = np.asarray(highs, dtype=np.float64)
+def _boxes(lows: object, highs: object, names: tuple[str, str]) -> tuple[FloatArray, FloatArray]:
+    """Check a set of boxes: two finite arrays of one shape ``(n, dim)`` with ``lows <= highs``."""
+    lo_name, hi_name = names
+    lo, hi = as_real_array(lows, lo_name), as_real_array(highs, hi_name)
     if lo.ndim != 2 or lo.shape != hi.shape:
-        raise ShapeError(
-            f"expected {name} lows and highs of one shape (n, dim); received {lo.shape} and {hi.shape}"
-        )
-    if not (np.all(np.isfinite(lo)) and np.all(np.isfinite(hi))):
-        raise InvalidInputError(f"expected finite box corners for {name}; received NaN or inf")
-    if np.any(lo > hi):
-        raise InvalidInputError(f"expected lows <= highs for every box of {name}; some are inverted")
+        raise ShapeError(f"{lo_name} and {hi_name} should be arrays of one shape (n, dim), "
+                         f"not {lo.shape} and {hi.shape}")
+    check_finite(lo, lo_name)
+    check_finite(hi, hi_name)
+    inverted = np.flatnonzero(np.any(lo > hi, axis=1))
+    if inverted.shape[0]:
+        k = int(inverted[0])
+        raise InvalidInputError(f"{lo_name} should be <= {hi_name} in every coordinate; box {k} has "
+                                f"{lo_name} {lo[k].tolist()} and {hi_name} {hi[k].tolist()}")
     return lo, hi
 
 
-def _pad(pad: float) -> float:
-    value = float(pad)
-    if not (np.isfinite(value) and value >= 0.0):
-        raise ToleranceError(f"expected a finite pad >= 0 (model units); received {pad!r}")
-    return value
+def _points(points: object) -> FloatArray:
+    """Check the points of :func:`cluster_points`: a finite array of shape ``(n, dim)``, ``dim >= 1``."""
+    pts = as_real_array(points, "points")
+    if pts.ndim != 2 or pts.shape[1] == 0:
+        raise ShapeError(f"points should have shape (n, dim) with dim >= 1, not {pts.shape}")
+    check_finite(pts, "points")
+    return pts
+
+
+def _links(links: object, n: int) -> IntArray:
+    """Check the links of :func:`cluster_points`: pairs ``(i, j)`` of indices of the ``n`` points."""
+    if links is None or isinstance(links, (str, bytes, numbers.Number)):
+        raise InputTypeError(f"links should be a sequence of (int, int) pairs, not {type(links).__name__}")
+    extra = as_index_array(links, "links")
+    if extra.shape != (0,) and (extra.ndim != 2 or extra.shape[1] != 2):
+        raise ShapeError(f"links should be (int, int) pairs, shape (k, 2), not shape {extra.shape}")
+    if extra.size and (extra.min() < 0 or extra.max() >= n):
+        raise ShapeError(f"links should be indices of the {n} points (0 to {n - 1}), "
+                         f"not from {int(extra.min())} to {int(extra.max())}")
+    return extra
 
 
 def _ranges(starts: IntArray, stops: IntArray) -> tuple[IntArray, IntArray]:
@@ -131,12 +150,17 @@ def box_pairs(lows: object, highs: object, *, pad: float = 0.0) -> IntArray:
 
     Raises
     ------
+    InputTypeError
+        If ``lows`` or ``highs`` is not an array of real numbers (strings, a ragged list ...).
     ShapeError
         If ``lows`` and ``highs`` are not two arrays of one shape ``(n, dim)``.
+    NonFiniteError
+        If a corner is not finite.
     InvalidInputError
-        If a corner is not finite or a box is inverted.
+        If a box is inverted (a low above its high).
     ToleranceError
-        If ``pad`` is negative or not finite.
+        If ``pad`` is negative or not finite (:class:`~relief_cad.errors.ToleranceTypeError`
+        if it is not a real number).
 
     Examples
     --------
@@ -144,9 +168,19 @@ def box_pairs(lows: object, highs: object, *, pad: float = 0.0) -> IntArray:
     [[0, 1]]
     >>> box_pairs(np.empty((0, 3)), np.empty((0, 3))).shape
     (0, 2)
+    >>> box_pairs([[0.0, 0.0]], [[1.0, 1.0]], pad=-1.0)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ToleranceError: pad should be a finite distance >= 0 in model units, not -1.0
     """
-    lo, hi = _boxes(lows, highs, "the boxes")
-    p = _pad(pad)
+    lo, hi = _boxes(lows, highs, ("lows", "highs"))
+    return _box_pairs(lo, hi, check_distance(pad, "pad"))
+
+
+def _box_pairs(lows: object, highs: object, pad: float) -> IntArray:
+    """:func:`box_pairs` of boxes known to be valid (the CAD layer's calls: no checks)."""
+    lo, hi = np.asarray(lows, dtype=np.float64), np.asarray(highs, dtype=np.float64)
+    p = float(pad)
     i, j = _cell_pairs(lo, hi, p)
     a, b = np.minimum(i, j), np.maximum(i, j)
     keep = (a != b) & _touch(lo, hi, lo, hi, a, b, p)  # the lower index as ``a`` (one rounding)
@@ -173,7 +207,7 @@ def box_pairs_between(lows_a: object, highs_a: object, lows_b: object, highs_b: 
 
     Raises
     ------
-    ShapeError, InvalidInputError, ToleranceError
+    InputTypeError, ShapeError, NonFiniteError, InvalidInputError, ToleranceError
         As for :func:`box_pairs`; ``ShapeError`` also if the dimensions differ.
 
     Examples
@@ -181,12 +215,25 @@ def box_pairs_between(lows_a: object, highs_a: object, lows_b: object, highs_b: 
     >>> lows_b, highs_b = [[0.5, 0.5], [5.0, 5.0]], [[2.0, 2.0], [6.0, 6.0]]
     >>> box_pairs_between([[0.0, 0.0]], [[1.0, 1.0]], lows_b, highs_b).tolist()
     [[0, 0]]
+    >>> box_pairs_between([[0.0, 0.0]], [[1.0, 1.0]], [[0.0, 0.0, 0.0]], [[1.0, 1.0, 1.0]])
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ShapeError: lows_a and lows_b should have one dim (columns), not 2 and 3
     """
-    lo_a, hi_a = _boxes(lows_a, highs_a, "set a")
-    lo_b, hi_b = _boxes(lows_b, highs_b, "set b")
+    lo_a, hi_a = _boxes(lows_a, highs_a, ("lows_a", "highs_a"))
+    lo_b, hi_b = _boxes(lows_b, highs_b, ("lows_b", "highs_b"))
     if lo_a.shape[1] != lo_b.shape[1] and lo_a.shape[0] and lo_b.shape[0]:
-        raise ShapeError(f"expected boxes of one dimension; received {lo_a.shape[1]} and {lo_b.shape[1]}")
-    p = _pad(pad)
+        raise ShapeError(f"lows_a and lows_b should have one dim (columns), not {lo_a.shape[1]} and "
+                         f"{lo_b.shape[1]}")
+    return _box_pairs_between(lo_a, hi_a, lo_b, hi_b, check_distance(pad, "pad"))
+
+
+def _box_pairs_between(lows_a: object, highs_a: object, lows_b: object, highs_b: object,
+                       pad: float) -> IntArray:
+    """:func:`box_pairs_between` of boxes known to be valid (the CAD layer's calls: no checks)."""
+    lo_a, hi_a = np.asarray(lows_a, dtype=np.float64), np.asarray(highs_a, dtype=np.float64)
+    lo_b, hi_b = np.asarray(lows_b, dtype=np.float64), np.asarray(highs_b, dtype=np.float64)
+    p = float(pad)
     if lo_a.shape[0] == 0 or lo_b.shape[0] == 0:
         return np.empty((0, 2), dtype=np.int64)
     na = lo_a.shape[0]
@@ -236,10 +283,16 @@ def cluster_points(
 
     Raises
     ------
+    InputTypeError
+        If ``points`` is not an array of real numbers, or ``links`` not integer pairs.
     ShapeError
-        If ``points`` is not 2D, or a link is not a pair of valid indices.
-    InvalidInputError, ToleranceError
-        If a point is not finite, or ``tol`` is negative or not finite.
+        If ``points`` is not of shape ``(n, dim)`` (``dim >= 1``), or a link is not a pair of
+        valid indices.
+    NonFiniteError
+        If a point is not finite.
+    ToleranceError
+        If ``tol`` is negative or not finite (:class:`~relief_cad.errors.ToleranceTypeError`
+        if it is not a real number).
 
     Examples
     --------
@@ -249,18 +302,20 @@ def cluster_points(
     [0, 0]
     >>> cluster_points(np.empty((0, 3)), 1.0).tolist()
     []
+    >>> cluster_points([[0.0, 0.0], [5.0, 0.0]], 1e-6, links=[(0, 2)])
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ShapeError: links should be indices of the 2 points (0 to 1), not from 0 to 2
     """
+    pts = _points(points)
+    return _cluster_points(pts, check_distance(tol, "tol"), _links(links, pts.shape[0]))
+
+
+def _cluster_points(points: object, tol: float, links: object) -> IntArray:
+    """:func:`cluster_points` of points and links known to be valid (the CAD layer's call: no checks)."""
     pts = np.asarray(points, dtype=np.float64)
-    if pts.ndim != 2:
-        raise ShapeError(f"expected points of shape (n, dim); received an array of shape {pts.shape}")
-    if not np.all(np.isfinite(pts)):
-        raise InvalidInputError("expected finite points; received NaN or inf")
-    p = _pad(tol)
+    p = float(tol)
     extra = np.asarray(links, dtype=np.int64).reshape(-1, 2)
-    if extra.shape[0] and (extra.min() < 0 or extra.max() >= pts.shape[0]):
-        raise ShapeError(
-            f"expected links between point indices 0..{pts.shape[0] - 1}; received {extra.tolist()}"
-        )
     node, lo, hi = _tight_groups(pts, p)
     edges = [node[extra]] if extra.shape[0] else []
     if lo.shape[0] > 1:

@@ -55,7 +55,7 @@ from ._types import FloatArray
 from .contacts import range_exponent
 from .curves import RationalBezier
 from .errors import ShapeError, ToleranceError, WeightError
-from .tolerances import _default_tolerances, resolve_tolerance
+from .tolerances import _default_tolerances, _resolve_tolerance
 
 __all__ = [
     "RESULT_COLUMNS",
@@ -428,5 +428,5 @@ def _pair_tolerances(p: FloatArray, w: FloatArray, off: NDArray[np.int64], pairs
             H[:, :2] = p * w[:, None]
         H[:, 2] = w
         return lambda lo, hi: _default_tolerances(curve, H, p, off, pairs[lo:hi])
-    return lambda lo, hi: np.array([resolve_tolerance(tol, curve(i), curve(j))
+    return lambda lo, hi: np.array([_resolve_tolerance(tol, curve(i), curve(j))
                                     for i, j in pairs[lo:hi].tolist()])

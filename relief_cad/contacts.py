@@ -51,7 +51,7 @@ from ._kernels.polish import _spread as _spread_one
 from ._types import FloatArray
 from .curves import RationalBezier, _decasteljau
 from .results import Intersection, Overlap, Result
-from .tolerances import rounding_floor
+from .tolerances import _rounding_floor
 
 __all__ = [
     "CLUSTER_GAP",
@@ -722,7 +722,7 @@ def _locate(a: RationalBezier, b: RationalBezier, p: Intersection, tol: float) -
     # apart); within the window in ``u`` as in ``t``: the rounding of a contact of order four (an
     # ellipse and its osculating circle at a vertex) puts the kernel's estimate 1e-4 of ``t`` and
     # 2e-4 of ``u`` off it
-    if gap > min(tol, p.distance + 1e3 * rounding_floor(a, b)) or abs(u - p.u) > w:
+    if gap > min(tol, p.distance + 1e3 * _rounding_floor(a, b)) or abs(u - p.u) > w:
         return p
     return Intersection(t, u, 0.5 * (a.evaluate(t) + b.evaluate(u)), p.kind, gap)
 

@@ -101,10 +101,10 @@ from .results import Intersection, IntersectionList, Overlap, ParameterBox, Resu
 from .space import intersect_space, space_pair
 from .tolerances import (
     _pairs_default_tolerances,
+    _resolve_tolerance,
+    _rounding_floor,
     _sampled_tolerance,
     default_tolerance,
-    resolve_tolerance,
-    rounding_floor,
 )
 
 __all__ = [
@@ -310,13 +310,13 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
         if a.control_points.shape[1] == 3:
             result: IntersectionList = intersect_space(a, b, tol=tol, budget=budget, on_budget=on_budget)
             return result
-        ftol = resolve_tolerance(check_tol(tol), a)
+        ftol = _resolve_tolerance(check_tol(tol), a)
         # the curve of a's own points and weights, as built from them (the same rows for every a)
         curve = RationalBezier._rebuilt(a.control_points, a.weights)
         return finish(_with_tol(_self_planar(curve, ftol, nbudget), ftol), on_budget)
     # the default, or the given tol raised to the data's rounding level (one rule: resolve_tolerance;
     # _sampled_tolerance is its compiled default for two curves)
-    ftol = (_sampled_tolerance((a, b)) if tol is None else None) or resolve_tolerance(check_tol(tol), a, b)
+    ftol = (_sampled_tolerance((a, b)) if tol is None else None) or _resolve_tolerance(check_tol(tol), a, b)
     # planar pairs in one compiled call (planar_pair: the curves' kernel views, the kernel, the
     # result list). Curves whose end points match within 2 tol (a margin for the exact rescaling of
     # huge coordinates there) may coincide all along, the clipping's slowest case: whole_overlap
@@ -430,7 +430,7 @@ def _line_results(curve: RationalBezier, foot: FloatArray, e: FloatArray, given:
     lo = float(min(s.min(), 0.0))
     hi = float(max(s.max(), 0.0))
     # the default (curve and foot), or the given tol checked against the curve
-    base = default_tolerance(curve, foot[None, :]) if given is None else resolve_tolerance(given, curve)
+    base = default_tolerance(curve, foot[None, :]) if given is None else _resolve_tolerance(given, curve)
     # 1 % beyond the curve's extent along the line, in the curve's own scale (a fixed pad of one
     # direction length made the segment, and its rounding floor, huge beside a tiny curve), and
     # longer than the tolerance: a curve shorter than the rounding of its coordinates (one ulp at
@@ -439,7 +439,7 @@ def _line_results(curve: RationalBezier, foot: FloatArray, e: FloatArray, given:
     pad = max(0.01 * ext, 4.0 * base)
     seg = np.array([foot + (lo - pad) * e, foot + (hi + pad) * e])
     # raised to the rounding floor of the segment that stands for the line
-    ftol = max(base, rounding_floor(curve, RationalBezier(seg)))
+    ftol = max(base, _rounding_floor(curve, RationalBezier(seg)))
     return _planar(pts, curve.weights, seg, np.ones(2), ftol, budget), ftol
 
 
@@ -460,7 +460,7 @@ def _batch_job(out: list[IntersectionList], start: int, part: list[tuple[Rationa
     pairs = [part[k] for k in taken]
     try:
         tols = (_pairs_default_tolerances(pairs) if tol is None
-                else np.array([resolve_tolerance(tol, *pr) for pr in pairs]))
+                else np.array([_resolve_tolerance(tol, *pr) for pr in pairs]))
         idx = np.arange(2 * len(pairs), dtype=np.int64).reshape(-1, 2)
         rows = intersect_batch_kernel(pts, wts, offsets, idx, tols, budget)
         lists, looks = batch_lists(rows, tols)  # by pair, each by t (the kernel's order)

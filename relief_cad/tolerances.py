@@ -112,6 +112,15 @@ def default_tolerance(*inputs: CurveOrPoints) -> float:
         :func:`rounding_floor` of the inputs (at least ``1e-300``): coincident points at the
         origin, or subnormal coordinates, get ``1e-300``.
 
+    Raises
+    ------
+    InputTypeError
+        If no input is given, or one is neither a curve nor a non-empty array of real numbers.
+    ShapeError
+        If an array of points is not of shape ``(m, d)``.
+    NonFiniteError
+        If a point is not finite.
+
     Examples
     --------
     >>> default_tolerance(np.zeros((2, 2)))
@@ -120,6 +129,10 @@ def default_tolerance(*inputs: CurveOrPoints) -> float:
     >>> steep = RationalBezier([[0, 0], [1, 1e6], [2, -1e6], [3, 0]])  # control polygon >> curve
     >>> default_tolerance(steep) < 1e-9 * 1e6
     True
+    >>> default_tolerance(steep, np.array([0.0, 1.0]))
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ShapeError: inputs[1] should be a RationalBezier or an (m, d) array of points, not an...
     """
     from .curves import RationalBezier
 
@@ -127,27 +140,53 @@ def default_tolerance(*inputs: CurveOrPoints) -> float:
         fast = _sampled_tolerance(cast(tuple[RationalBezier, ...], inputs))
         if fast is not None:
             return fast
-    from ._checks import as_real_array, check_finite
-    from .errors import InputTypeError
+    return _general_tolerance(_checked_inputs(inputs, "inputs", "default_tolerance"))
 
-    if not inputs:
-        raise InputTypeError("default_tolerance needs at least one curve or array of points")
+
+def _general_tolerance(items: tuple[RationalBezier | FloatArray, ...]) -> float:
+    """:func:`default_tolerance` of checked inputs, each curve sampled here (the general path)."""
     extents: list[FloatArray] = []
     coords: list[FloatArray] = []
-    for item in inputs:
-        if isinstance(item, RationalBezier):
+    for item in items:
+        if isinstance(item, np.ndarray):
+            extents.append(item)
+            coords.append(item)
+        else:
             extents.append(item.evaluate(np.linspace(0.0, 1.0, min(2 * item.degree + 3, _SAMPLES))))
             coords.append(item.control_points)
-            continue
-        arr = as_real_array(item, "default_tolerance input")
-        if arr.ndim == 0 or arr.size == 0:
-            raise InputTypeError("default_tolerance needs curves or non-empty (m, d) arrays of points, "
-                                 f"not an array of shape {arr.shape}")
-        check_finite(arr, "default_tolerance input")
-        arr = arr.reshape(-1, arr.shape[-1])
-        extents.append(arr)
-        coords.append(arr)
     return _tolerance_of(extents, coords)
+
+
+def _checked_inputs(items: tuple[object, ...], name: str,
+                    func: str) -> tuple[RationalBezier | FloatArray, ...]:
+    """The curves or arrays of points given to ``func`` as ``*name``, checked (its only check).
+
+    Curves stay as they are; anything else becomes a finite float array of shape ``(m, d)``.
+    """
+    from .curves import RationalBezier
+    from .errors import InputTypeError
+
+    if not items:
+        raise InputTypeError(f"{func} needs at least one curve or array of points ({name}), none given")
+    return tuple(item if isinstance(item, RationalBezier) else _point_array(item, f"{name}[{k}]")
+                 for k, item in enumerate(items))
+
+
+def _point_array(item: object, name: str) -> FloatArray:
+    """``item`` as a finite float array of points of shape ``(m, d)``, ``m, d >= 1``; else the error."""
+    from ._checks import as_real_array, check_finite
+    from .errors import InputTypeError, ShapeError
+
+    arr = as_real_array(item, name)
+    if arr.ndim == 0 or arr.size == 0:
+        what = type(item).__name__ if arr.ndim == 0 else f"an empty array of shape {arr.shape}"
+        raise InputTypeError(f"{name} should be a RationalBezier or a non-empty (m, d) array of points, "
+                             f"not {what}")
+    if arr.ndim != 2:
+        raise ShapeError(f"{name} should be a RationalBezier or an (m, d) array of points, "
+                         f"not an array of shape {arr.shape}")
+    check_finite(arr, name)
+    return arr
 
 
 def _sampled_tolerance(curves: tuple[RationalBezier, ...]) -> float | None:
@@ -230,9 +269,9 @@ def _tolerance_at(diag: FloatArray, scale: float, big: float) -> float:
     size = math.sqrt(squares) * scale
     tol = RELATIVE_TOLERANCE * size + ROUNDING_ULPS * _EPS * big
     if not math.isfinite(tol):
-        return floor_of_magnitude(big)
+        return _floor_of_magnitude(big)
     # never below the floor (subnormal data: 64 eps * 2e-308 < 1e-300)
-    return max(tol, floor_of_magnitude(big))
+    return max(tol, _floor_of_magnitude(big))
 
 
 def size_of(*curves: RationalBezier | FloatArray) -> float:
@@ -243,11 +282,22 @@ def size_of(*curves: RationalBezier | FloatArray) -> float:
     Computed on coordinates scaled by the largest one, so it does not overflow up to the float
     range.
 
+    Raises
+    ------
+    InputTypeError, ShapeError, NonFiniteError
+        As for :func:`default_tolerance`.
+
+    Examples
+    --------
     >>> from relief_cad import RationalBezier
     >>> size_of(RationalBezier([[0.0, 0.0], [3.0, 4.0]]), RationalBezier([[1e300, 0.0], [0.0, 0.0]]))
     1e+300
+    >>> size_of(np.array([[0.0, 0.0], [3.0, np.nan]]))
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.NonFiniteError: curves[0] should be finite numbers; entry (1, 1) is nan
     """
-    return _extent(curves)[0]
+    return _extent(_checked_inputs(curves, "curves", "size_of"))[0]
 
 
 def _extent(items: tuple[RationalBezier | FloatArray, ...]) -> tuple[float, float]:
@@ -271,7 +321,7 @@ def _extent(items: tuple[RationalBezier | FloatArray, ...]) -> tuple[float, floa
 
 
 def _points_of(item: RationalBezier | FloatArray) -> FloatArray:
-    """The control points of a curve, or an array of points as it is (already checked)."""
+    """The control points of a curve, or an array of points as it is (checked by :func:`_point_array`)."""
     if isinstance(item, np.ndarray):
         return item
     return item.control_points
@@ -303,8 +353,12 @@ def resolve_tolerance(tol: float | None, *curves: RationalBezier | FloatArray) -
 
     Raises
     ------
+    ToleranceTypeError
+        If ``tol`` is neither None nor a real number.
     ToleranceError
-        If ``tol`` exceeds ``MAX_TOLERANCE_FRACTION * size_of(*curves)``.
+        If ``tol`` is not a finite distance > 0, or exceeds ``MAX_TOLERANCE_FRACTION * size_of(*curves)``.
+    InputTypeError, ShapeError, NonFiniteError
+        For ``curves`` as for :func:`default_tolerance`.
 
     Examples
     --------
@@ -316,14 +370,26 @@ def resolve_tolerance(tol: float | None, *curves: RationalBezier | FloatArray) -
     Traceback (most recent call last):
     ...
     relief_cad.errors.ToleranceError: tol should be at most 0.01 of the inputs' size (that is 0.05), not 1.0
+    >>> resolve_tolerance(float("nan"), line)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ToleranceError: tol should be a finite distance > 0 in model units, not nan
     """
+    from ._checks import check_tol
+
+    given = check_tol(tol)
+    return _resolve_tolerance(given, *_checked_inputs(curves, "curves", "resolve_tolerance"))
+
+
+def _resolve_tolerance(tol: float | None, *curves: RationalBezier | FloatArray) -> float:
+    """:func:`resolve_tolerance` of a checked ``tol`` and checked curves (relief_cad's own calls)."""
     if tol is None:
         return default_tolerance(*curves)
     if isinstance(tol, ModelTolerance) and not any(isinstance(c, np.ndarray) for c in curves):
         # a model's tolerance is never capped, so only the floor is needed: the largest |x|, compiled
-        return max(tol, floor_of_magnitude(max(max_abs(_points_of(c), 3) for c in curves)))
+        return max(tol, _floor_of_magnitude(max(max_abs(_points_of(c), 3) for c in curves)))
     size, big = _extent(curves)
-    floor = floor_of_magnitude(big)
+    floor = _floor_of_magnitude(big)
     limit = MAX_TOLERANCE_FRACTION * size
     if tol > max(limit, floor) and size > 0.0 and not isinstance(tol, ModelTolerance):
         from .errors import ToleranceError
@@ -340,10 +406,26 @@ def is_point_like(curve: RationalBezier, tol: float) -> bool:
     so such a curve is a single point up to ``tol``: it has no self-intersection, and the
     self-intersection paths answer at once instead of subdividing it to their depth limit.
 
+    ``tol`` may be 0 (every control point the same). A curve that is not a
+    :class:`~relief_cad.RationalBezier` raises :class:`~relief_cad.errors.InputTypeError`; a ``tol``
+    that is not a real number :class:`~relief_cad.errors.ToleranceTypeError`, and one that is not a
+    finite distance >= 0 :class:`~relief_cad.errors.ToleranceError`.
+
     >>> from relief_cad import RationalBezier
     >>> is_point_like(RationalBezier([[1.0, 2.0, 3.0], [1.0, 2.0, 3.0 + 1e-17]]), 1e-12)
     True
+    >>> is_point_like(RationalBezier([[1.0, 2.0], [1.0, 2.0]]), -1.0)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ToleranceError: tol should be a finite distance >= 0 in model units, not -1.0
     """
+    from ._checks import check_curve, check_distance
+
+    return _is_point_like(check_curve(curve, "curve"), check_distance(tol, "tol"))
+
+
+def _is_point_like(curve: RationalBezier, tol: float) -> bool:
+    """:func:`is_point_like` of a checked curve and ``tol`` (relief_cad's own calls)."""
     pts = curve.control_points
     return bool(np.max(np.abs(pts - pts[0])) <= tol)
 
@@ -355,11 +437,27 @@ def rounding_floor(*curves: RationalBezier | FloatArray) -> float:
     computed from such coordinates are only known to about that accuracy: two lines crossing at
     1e-16 apart in rounding are still a crossing. No product is formed, so nothing overflows.
 
+    Raises
+    ------
+    InputTypeError, ShapeError, NonFiniteError
+        As for :func:`default_tolerance`.
+
+    Examples
+    --------
     >>> from relief_cad import RationalBezier
     >>> rounding_floor(RationalBezier([[0.0, 0.0], [1.0, 2.0]])) == ROUNDING_ULPS * _EPS * 2.0
     True
+    >>> rounding_floor("curve")
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InputTypeError: curves[0] should be an array of real numbers, not of str
     """
-    return floor_of_magnitude(_extent(curves)[1])
+    return _rounding_floor(*_checked_inputs(curves, "curves", "rounding_floor"))
+
+
+def _rounding_floor(*curves: RationalBezier | FloatArray) -> float:
+    """:func:`rounding_floor` of checked curves (relief_cad's own calls)."""
+    return _floor_of_magnitude(_extent(curves)[1])
 
 
 def floor_of_magnitude(big: float) -> float:
@@ -368,9 +466,32 @@ def floor_of_magnitude(big: float) -> float:
     :func:`rounding_floor` from the magnitude alone, for callers that keep box corners as
     floats: ``rounding_floor(points) == floor_of_magnitude(max |x|)`` to the bit.
 
+    ``big`` should be a finite real number >= 0: else :class:`~relief_cad.errors.InputTypeError`,
+    :class:`~relief_cad.errors.NonFiniteError` or :class:`~relief_cad.errors.InvalidInputError`.
+
     >>> floor_of_magnitude(2.0) == ROUNDING_ULPS * _EPS * 2.0
     True
     >>> floor_of_magnitude(0.0)  # never zero
     1e-300
+    >>> floor_of_magnitude(float("inf"))
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.NonFiniteError: big should be a finite number, not inf
     """
+    return _floor_of_magnitude(_magnitude(big))
+
+
+def _magnitude(big: object) -> float:
+    """``big`` as a float, when it is a finite real number >= 0 (a largest coordinate magnitude)."""
+    from ._checks import check_param
+    from .errors import InvalidInputError
+
+    value = check_param(big, "big")
+    if value < 0.0:
+        raise InvalidInputError(f"big should be a magnitude >= 0 in model units, not {value!r}")
+    return value
+
+
+def _floor_of_magnitude(big: float) -> float:
+    """:func:`floor_of_magnitude` of a checked ``big`` (relief_cad's own calls)."""
     return max(ROUNDING_ULPS * _EPS * big, 1e-300)

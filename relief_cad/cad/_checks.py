@@ -15,7 +15,7 @@ from __future__ import annotations
 from typing import Any
 
 from .._checks import check_tol as _core_check_tol
-from ..tolerances import ModelTolerance, resolve_tolerance
+from ..tolerances import ModelTolerance, _resolve_tolerance
 
 __all__ = ["check_model_tol", "check_tol"]
 
@@ -90,4 +90,4 @@ def check_model_tol(tol: Any, edges: list[Any]) -> ModelTolerance:
     for edge in edges:
         BRepBndLib.Add_s(edge, box, False)
     corners = np.array(box_corners(box), dtype=float).reshape(2, 3)
-    return ModelTolerance(resolve_tolerance(value, corners))
+    return ModelTolerance(_resolve_tolerance(value, corners))

@@ -48,14 +48,14 @@ from OCP.TopExp import TopExp
 
 from .._kernels import KIND_CROSSING, KIND_TANGENT, KIND_UNRESOLVED
 from .._kernels.bezier import affine_rows
-from ..broadphase import box_pairs, box_pairs_between
+from ..broadphase import _box_pairs, _box_pairs_between
 from ..clipping import _batch_rows
 from ..curves import RationalBezier
 from ..errors import InvalidInputError
 from ..intersection import DEFAULT_BUDGET
 from ..pieces import along_chord
 from ..results import Intersection, Overlap
-from ..tolerances import ModelTolerance, default_tolerance, floor_of_magnitude
+from ..tolerances import ModelTolerance, _floor_of_magnitude, default_tolerance
 from . import ocp
 from ._checks import check_model_tol, check_tol
 from .flavour import flavour_of, wrap_edge, wrap_vertices
@@ -411,7 +411,7 @@ def _pair_jobs(
             and la[2] - tol <= hb[2] and lb[2] <= ha[2] + tol
         ]
     else:
-        candidates = box_pairs_between(ea.lows, ea.highs, eb.lows, eb.highs, pad=tol).tolist()
+        candidates = _box_pairs_between(ea.lows, ea.highs, eb.lows, eb.highs, pad=tol).tolist()
     still_a, still_b = _stalls(ea, tol)[0], _stalls(eb, tol)[0]
     for ii, jj in candidates:
         i, j = int(ii), int(jj)
@@ -1268,7 +1268,7 @@ def _box_floor(*corners: _Point3) -> float:
     The largest magnitude is that of a corner's coordinate, so the floor is found on the floats
     (numpy's reductions cost more than this on a few corners).
     """
-    return floor_of_magnitude(max(abs(c) for corner in corners for c in corner))
+    return _floor_of_magnitude(max(abs(c) for corner in corners for c in corner))
 
 
 def _stretch_within(p: _Raw, q: _Raw, tol: float) -> bool:
@@ -1374,7 +1374,7 @@ def _close_edge_pairs(infos_a: list[_EdgeInfo], infos_b: list[_EdgeInfo], tol: f
                     out.append((ia, ib))
         return out
     # a grid of the boxes (relief_cad.broadphase): cost grows with the nearby pairs, not with all pairs
-    return box_pairs_between(
+    return _box_pairs_between(
         [e.lo for e in infos_a], [e.hi for e in infos_a], [e.lo for e in infos_b], [e.hi for e in infos_b],
         pad=tol,
     ).tolist()
@@ -1404,12 +1404,12 @@ def _model_jobs(
     P, W, offsets, ends, _ = _pack_edges(everyone)  # packed curve g is segment g of the boxes below
     lo, hi, edge, seg = _segment_boxes(everyone)
     if self_mode:
-        pairs = box_pairs(lo, hi, pad=tol)
+        pairs = _box_pairs(lo, hi, pad=tol)
         selves = [(k, i) for k, e in enumerate(infos_a) for i in range(len(e.rows))
                   if not _no_self_job(e, i, True, tol)]
     else:
         na = sum(len(e.lows) for e in infos_a)
-        pairs = box_pairs_between(lo[:na], hi[:na], lo[na:], hi[na:], pad=tol)
+        pairs = _box_pairs_between(lo[:na], hi[:na], lo[na:], hi[na:], pad=tol)
         pairs[:, 1] += na
         selves = []
     point = np.array([f for e in everyone for f in _stalls(e, tol)[0]], dtype=bool).reshape(-1)

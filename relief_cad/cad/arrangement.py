@@ -44,9 +44,9 @@ from typing import Any
 
 import numpy as np
 
-from ..broadphase import cluster_points
+from ..broadphase import _cluster_points
 from ..errors import InvalidInputError, OcctError, UnsupportedCurveError
-from ..tolerances import floor_of_magnitude
+from ..tolerances import _floor_of_magnitude
 from . import api, flavour, ocp
 
 try:
@@ -203,7 +203,7 @@ class _Values:
 def _vertices(graph: _Graph, values: _Values) -> tuple[np.ndarray, list[Any], np.ndarray]:
     """Merge the cuts into vertices: labels per cut, the vertices, their points (rows)."""
     points = np.array([c.point for c in graph.cuts], dtype=np.float64).reshape(-1, 3)
-    labels = cluster_points(points, graph.tol, links=graph.links)
+    labels = _cluster_points(points, graph.tol, links=graph.links)
     n = int(labels.max()) + 1 if labels.shape[0] else 0
     on_curve = np.array([c.point if c.on_edge else values(c.edge, c.t) for c in graph.cuts],
                         dtype=np.float64).reshape(-1, 3)
@@ -224,7 +224,7 @@ def _vertices(graph: _Graph, values: _Values) -> tuple[np.ndarray, list[Any], np
         # the measured error, rounded up by a relative 1e-9 and the rounding floor of the coordinates,
         # so that OCCT's own re-measuring passes: it evaluates the curves its way, ulps apart (an error
         # of 2.5e-7 at coordinates of 4,600 was 2.5e-16 over OCCT's distance, 1e-12 an ulp there)
-        rounding = floor_of_magnitude(max(abs(centre[0]), abs(centre[1]), abs(centre[2])))
+        rounding = _floor_of_magnitude(max(abs(centre[0]), abs(centre[1]), abs(centre[2])))
         builder.MakeVertex(v, gp_Pnt(*centre), max(floor, error * (1.0 + 1e-9) + rounding))
         vertices.append(v)
     return labels, vertices, centres
