@@ -27,15 +27,14 @@ from typing import overload
 
 import numpy as np
 
-from ._checks import as_real_array, check_span
+from ._checks import as_real_array, check_curve, check_finite, check_param, check_span
 from ._types import FloatArray, PointsLike
 from .curves import RationalBezier
 from .errors import (
-    InputTypeError,
     NoNeutralPlaneError,
-    NonFiniteError,
     ProjectionError,
     ShapeError,
+    ToleranceError,
     WeightError,
 )
 
@@ -50,34 +49,46 @@ __all__ = [
 ]
 
 
-def _as_points3(x: PointsLike) -> tuple[FloatArray, bool]:
-    arr = as_real_array(x, "points")
-    if arr.ndim == 1 and arr.shape[0] == 3:
-        return arr[None, :], True
-    if arr.ndim == 2 and arr.shape[1] == 3:
-        return arr, False
-    raise ShapeError(f"expected a point of shape (3,) or points of shape (m, 3), not shape {arr.shape}")
+def _as_points3(x: object, name: str) -> tuple[FloatArray, bool]:
+    """``x`` as finite points of shape (m, 3), and whether it was one point of shape (3,).
+
+    >>> _as_points3([1.0, 2.0], "x")
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ShapeError: x should be a point of shape (3,), ... not an array of shape (2,)
+    """
+    arr = as_real_array(x, name)
+    if arr.ndim not in (1, 2) or arr.shape[-1] != 3:
+        raise ShapeError(f"{name} should be a point of shape (3,), points of shape (m, 3) or a 3-D "
+                         f"RationalBezier, not an array of shape {arr.shape}")
+    check_finite(arr, name)
+    return (arr[None, :], True) if arr.ndim == 1 else (arr, False)
 
 
-def _require_curve(curve: object, dim: int, what: str) -> RationalBezier:
-    if not isinstance(curve, RationalBezier):
-        raise InputTypeError(f"{what} should be a RationalBezier, not {type(curve).__name__}")
-    if curve.dim != dim:
-        raise ShapeError(f"{what} should be a {dim}-D curve, not a {curve.dim}-D one")
-    return curve
+def _require_curve(curve: object, dim: int, name: str) -> RationalBezier:
+    """``curve`` when it is a RationalBezier of dimension ``dim`` (2: planar, 3: space)."""
+    checked = check_curve(curve, name)
+    if checked.dim != dim:
+        raise ShapeError(f"{name} should be a {dim}-D curve, not a {checked.dim}-D one")
+    return checked
+
+
+def _finite_image(out: FloatArray, name: str) -> FloatArray:
+    """``out``, the image of the points ``name``, when no coordinate overflowed to inf (or NaN)."""
+    check_finite(out, f"the image of {name} (overflow)")
+    return out
 
 
 def _map_points(matrix: FloatArray, pts: FloatArray, singular: str) -> FloatArray:
-    if not np.all(np.isfinite(pts)):
-        raise NonFiniteError("points should be finite numbers (found NaN or inf)")
-    h = np.hstack([pts, np.ones((pts.shape[0], 1))]) @ matrix.T
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # refused below
+        h = np.hstack([pts, np.ones((pts.shape[0], 1))]) @ matrix.T
+        out: FloatArray = h[:, :3] / h[:, 3:]
     w = h[:, 3]
     if np.any(w == 0.0):
         i = int(np.argmax(w == 0.0))
         raise ProjectionError(f"points should lie off the {singular}; point {pts[i].tolist()} lies on it "
                               "(its image is at infinity)")
-    out: FloatArray = h[:, :3] / w[:, None]
-    return out
+    return _finite_image(out, "x")
 
 
 class ReliefPerspective:
@@ -165,6 +176,9 @@ class ReliefPerspective:
 
         Raises
         ------
+        InputTypeError, ShapeError, NonFiniteError
+            For ``x`` not a 3-D curve nor finite points of shape (3,) or (m, 3) (or an image
+            that overflows).
         ProjectionError
             For a point on the neutral plane ``z = -k`` (sent to infinity), or a curve
             with a control point on or behind it (its image weights would not be positive).
@@ -179,8 +193,8 @@ class ReliefPerspective:
         relief_cad.errors.ProjectionError: points should lie off the neutral plane z = -k; point ...
         """
         if isinstance(x, RationalBezier):
-            return _require_curve(x, 3, "the curve").transformed(self.matrix)
-        pts, single = _as_points3(x)
+            return _require_curve(x, 3, "x").transformed(self.matrix)
+        pts, single = _as_points3(x, "x")
         out = _map_points(self.matrix, pts, "neutral plane z = -k")
         return out[0] if single else out
 
@@ -195,6 +209,8 @@ class ReliefPerspective:
 
         Raises
         ------
+        InputTypeError, ShapeError, NonFiniteError
+            As :meth:`apply`.
         ProjectionError
             For a point on the vanishing plane ``z = 1 + k`` (its preimage is at infinity),
             or a curve with a control point on or beyond it.
@@ -205,8 +221,8 @@ class ReliefPerspective:
         [0.0, 0.0, 2.0]
         """
         if isinstance(x, RationalBezier):
-            return _require_curve(x, 3, "the curve").transformed(self.inverse_matrix)
-        pts, single = _as_points3(x)
+            return _require_curve(x, 3, "x").transformed(self.inverse_matrix)
+        pts, single = _as_points3(x, "x")
         out = _map_points(self.inverse_matrix, pts, "vanishing plane z = 1 + k")
         return out[0] if single else out
 
@@ -237,6 +253,12 @@ def central_projection(x: RationalBezier | PointsLike) -> RationalBezier | Float
 
     Raises
     ------
+    InputTypeError
+        If ``x`` is neither a RationalBezier nor an array of real numbers.
+    ShapeError
+        If ``x`` is a planar curve, or points not of shape (3,) or (m, 3).
+    NonFiniteError
+        If a point is NaN or infinite, or its image overflows.
     ProjectionError
         If a point (or control point) has ``z <= 0``: it is not in front of the centre.
 
@@ -250,7 +272,7 @@ def central_projection(x: RationalBezier | PointsLike) -> RationalBezier | Float
     relief_cad.errors.ProjectionError: points should lie in front of the centre (z > 0); point 0 has z = 0.0
     """
     if isinstance(x, RationalBezier):
-        curve = _require_curve(x, 3, "the curve")
+        curve = _require_curve(x, 3, "x")
         h = curve.homogeneous
         if not np.all(h[:, 2] > 0.0):
             i = int(np.argmin(h[:, 2] > 0.0))
@@ -259,15 +281,14 @@ def central_projection(x: RationalBezier | PointsLike) -> RationalBezier | Float
                 f"control point {i} has z = {float(curve.control_points[i, 2])!r}"
             )
         return RationalBezier.from_homogeneous(h[:, :3])
-    pts, single = _as_points3(x)
-    if not np.all(np.isfinite(pts)):
-        raise NonFiniteError("points should be finite numbers (found NaN or inf)")
+    pts, single = _as_points3(x, "x")
     if not np.all(pts[:, 2] > 0.0):
         i = int(np.argmin(pts[:, 2] > 0.0))
         raise ProjectionError(
             f"points should lie in front of the centre (z > 0); point {i} has z = {float(pts[i, 2])!r}"
         )
-    out: FloatArray = pts[:, :2] / pts[:, 2:3]
+    with np.errstate(over="ignore"):  # refused by _finite_image
+        out = _finite_image(pts[:, :2] / pts[:, 2:3], "x")
     return out[0] if single else out
 
 
@@ -276,6 +297,13 @@ def lift(curve: RationalBezier) -> RationalBezier:
 
     Control points ``(x_i w_i, y_i w_i, w_i)``, all weights 1; its central projection
     from O onto z = 1 is the planar curve again.
+
+    Raises
+    ------
+    InputTypeError
+        If ``curve`` is not a RationalBezier.
+    ShapeError
+        If ``curve`` is a space curve.
 
     Examples
     --------
@@ -304,6 +332,10 @@ def preimage_of_lift(curve: RationalBezier, k: float) -> RationalBezier:
 
     Raises
     ------
+    InputTypeError
+        If ``curve`` is not a RationalBezier or ``k`` is not a real number.
+    ShapeError
+        If ``curve`` is a space curve.
     SpanError
         If ``k`` is not an admissible span.
     WeightError
@@ -320,7 +352,7 @@ def preimage_of_lift(curve: RationalBezier, k: float) -> RationalBezier:
     ...
     relief_cad.errors.WeightError: the construction needs 1 + k > w_i: weight 1 is 4.0 and k = 2.0; ...
     """
-    planar = _require_curve(curve, 2, "the planar curve P")
+    planar = _require_curve(curve, 2, "curve")
     kv = check_span(k)
     w = planar.weights
     bad = np.nonzero(w >= 1.0 + kv)[0]
@@ -342,12 +374,25 @@ def relief_of_lift(curve: RationalBezier, k: float) -> RationalBezier:
 
     Control points ``(1 + k)(x_i w_i, y_i w_i, w_i) / (w_i + k)``, weights ``w_i + k``.
 
+    Raises
+    ------
+    InputTypeError
+        If ``curve`` is not a RationalBezier or ``k`` is not a real number.
+    ShapeError
+        If ``curve`` is a space curve.
+    SpanError
+        If ``k`` is not an admissible span (finite, > 0 and != 1).
+
     Examples
     --------
     >>> relief_of_lift(RationalBezier([[0, 0], [1, 0]]), 2.0).weights.tolist()
     [3.0, 3.0]
+    >>> relief_of_lift(RationalBezier([[0, 0, 0], [1, 0, 0]]), 2.0)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ShapeError: curve should be a 2-D curve, not a 3-D one
     """
-    planar = _require_curve(curve, 2, "the planar curve P")
+    planar = _require_curve(curve, 2, "curve")
     kv = check_span(k)
     h = planar.homogeneous
     r = np.empty((h.shape[0], 4))
@@ -408,6 +453,22 @@ def _null_space(a: FloatArray, rel: float) -> FloatArray:
     return out
 
 
+def _check_rtol(rtol: object) -> float:
+    """``rtol`` as a float > 0 and < 1: a relative tolerance (dimensionless, not a distance).
+
+    At ``rtol >= 1`` every direction would count as null, so nothing would be tested.
+
+    >>> _check_rtol(1.0)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ToleranceError: rtol should be a relative tolerance > 0 and < 1, not 1.0
+    """
+    value = check_param(rtol, "rtol")
+    if not 0.0 < value < 1.0:
+        raise ToleranceError(f"rtol should be a relative tolerance > 0 and < 1, not {value!r}")
+    return value
+
+
 def find_neutral_plane(curve: RationalBezier, k: float = 2.0, *, rtol: float = 1e-10) -> NeutralPlaneFrame:
     r"""Find a neutral plane of a space rational curve and the frame giving it the paper's form.
 
@@ -432,7 +493,7 @@ def find_neutral_plane(curve: RationalBezier, k: float = 2.0, *, rtol: float = 1
     k : float, default 2.0
         The span wanted in the returned frame.
     rtol : float, default 1e-10
-        Relative tolerance for the linear condition (on column-normalised data).
+        Relative tolerance for the linear condition (on column-normalised data), > 0 and < 1.
 
     Returns
     -------
@@ -440,6 +501,12 @@ def find_neutral_plane(curve: RationalBezier, k: float = 2.0, *, rtol: float = 1
 
     Raises
     ------
+    InputTypeError
+        If ``curve`` is not a RationalBezier, or ``k`` or ``rtol`` is not a real number.
+    SpanError
+        If ``k`` is not an admissible span (finite, > 0 and != 1).
+    NonFiniteError, ToleranceError
+        If ``rtol`` is NaN or infinite, or not > 0 and < 1.
     NoNeutralPlaneError
         If no such plane exists (the curve is not of the paper's form in any frame).
 
@@ -453,15 +520,18 @@ def find_neutral_plane(curve: RationalBezier, k: float = 2.0, *, rtol: float = 1
     Traceback (most recent call last):
     ...
     relief_cad.errors.NoNeutralPlaneError: the curve has no neutral plane: ...
+    >>> find_neutral_plane(preimage_of_lift(P, 3.0), rtol=0)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ToleranceError: rtol should be a relative tolerance > 0 and < 1, not 0.0
     """
-    if not isinstance(curve, RationalBezier):
-        raise InputTypeError(f"the curve should be a RationalBezier, not {type(curve).__name__}")
+    space = check_curve(curve, "curve").embedded(3)
     kv = check_span(k)
-    space = curve.embedded(3)
+    rel = _check_rtol(rtol)
     h = space.homogeneous
     npts = h.shape[0]
     a = np.hstack([h, -np.ones((npts, 1))])
-    basis = _null_space(a, rtol)
+    basis = _null_space(a, rel)
     fail = NoNeutralPlaneError(
         "the curve has no neutral plane: no plane n.x + d = 0 gives W_i * (n.V_i + d) one constant "
         f"non-zero value over its {npts} control points, so it is not of the paper's form in any frame"

@@ -44,7 +44,17 @@ from typing import Literal
 import numpy as np
 from numpy.typing import NDArray
 
-from ._checks import OnBudget, check_budget, check_on_budget, check_span, check_tol
+from ._checks import (
+    OnBudget,
+    as_real_array,
+    check_budget,
+    check_curve,
+    check_finite,
+    check_on_budget,
+    check_param,
+    check_span,
+    check_tol,
+)
 from ._kernels import (
     KIND_OVERLAP,
     KIND_UNRESOLVED,
@@ -60,11 +70,11 @@ from ._kernels.rows import space_results
 from ._types import FloatArray
 from .contacts import needs_refining, range_exponent, refine_contacts, refine_self, whole_overlap
 from .curves import RationalBezier
-from .errors import BudgetExceededError, InputTypeError
+from .errors import BudgetExceededError, InputTypeError, InvalidInputError, ProjectionError, ShapeError
 from .pieces import monotone_pieces, one_place
 from .relief import ReliefPerspective, central_projection
 from .results import Intersection, IntersectionList, ParameterBox, Result, finish
-from .tolerances import _sampled_tolerance, is_point_like, resolve_tolerance
+from .tolerances import _is_point_like, _resolve_tolerance, _sampled_tolerance
 
 __all__ = ["ReliefFrame", "ReliefScheme", "intersect_space", "relief_scheme"]
 
@@ -152,6 +162,49 @@ def _first_frame(points: FloatArray) -> ReliefFrame:
     raise AssertionError("unreachable: the oblique frames always exist")  # pragma: no cover
 
 
+def _check_frame(frame: object) -> ReliefFrame:
+    """``frame`` when it is a :class:`ReliefFrame` whose matrix is a similarity of scale ``1 / frame.scale``.
+
+    The planar tolerance is the space one divided by ``frame.scale``: any other matrix (a shear, a
+    projective map, a scale that does not match) would give the scheme a meaningless tolerance.
+
+    >>> _check_frame(ReliefFrame(np.eye(4), -1.0, "mine"))
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InvalidInputError: frame.scale should be > 0 (model units per frame unit), not -1.0
+    """
+    if not isinstance(frame, ReliefFrame):
+        raise InputTypeError(f"frame should be a ReliefFrame or None, not {type(frame).__name__}")
+    m = as_real_array(frame.matrix, "frame.matrix")
+    if m.shape != (4, 4):
+        raise ShapeError(f"frame.matrix should have shape (4, 4), not {m.shape}")
+    check_finite(m, "frame.matrix")
+    scale = check_param(frame.scale, "frame.scale")
+    if scale <= 0.0:
+        raise InvalidInputError(f"frame.scale should be > 0 (model units per frame unit), not {scale!r}")
+    rot = m[:3, :3] * scale
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow fails the test
+        off = float(np.max(np.abs(rot @ rot.T - np.eye(3))))
+    if not (off <= 1e-9 and m[3].tolist() == [0.0, 0.0, 0.0, 1.0]):
+        raise InvalidInputError(
+            "frame.matrix should be a similarity (frame.scale * its 3x3 block orthogonal, last row "
+            f"(0, 0, 0, 1)), not one whose last row is {m[3].tolist()} and whose scaled block is off "
+            f"orthogonal by {off:.3g}")
+    return frame
+
+
+def _framed(curve: RationalBezier, frame: ReliefFrame, name: str) -> RationalBezier:
+    """``curve`` in frame coordinates, every control point in front of the centre (``z > 0``)."""
+    out = curve.transformed(frame.matrix)
+    z = out.homogeneous[:, 2]
+    if not np.all(z > 0.0):
+        i = int(np.argmin(z > 0.0))
+        raise ProjectionError(
+            f"frame should put every control point of {name} in front of the centre (z > 0 in frame "
+            f"coordinates); control point {i} has z = {float(out.control_points[i, 2])!r}")
+    return out
+
+
 def _planar_tolerance(a_f: RationalBezier, b_f: RationalBezier, tol_frame: float) -> float:
     pts = np.vstack([a_f.control_points, b_f.control_points])
     zmin = float(pts[:, 2].min())
@@ -184,6 +237,18 @@ def relief_scheme(
     -------
     ReliefScheme
 
+    Raises
+    ------
+    InputTypeError
+        If ``a`` or ``b`` is not a RationalBezier, ``frame`` not a ReliefFrame (or None), or ``k``
+        not a real number.
+    SpanError, ToleranceError
+        For a span ``k`` that is not > 0 and != 1, or a ``tol`` as in :func:`intersect_space`.
+    InvalidInputError, ShapeError, NonFiniteError
+        For a given ``frame`` whose matrix is not a finite 4x4 similarity of scale ``1 / frame.scale``.
+    ProjectionError
+        For a given ``frame`` that puts a control point on or behind the centre (``z <= 0``).
+
     Examples
     --------
     >>> from relief_cad import RationalBezier, preimage_of_lift
@@ -191,16 +256,21 @@ def relief_scheme(
     >>> s = relief_scheme(preimage_of_lift(P, 2.0), preimage_of_lift(P.reversed(), 2.0))
     >>> s.frame.name, bool(np.allclose(s.a_image(0.3), P(0.3)))
     ('model', True)
+    >>> relief_scheme("x", P)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InputTypeError: a should be a RationalBezier, not str
     """
-    a3 = a.embedded(3)
-    b3 = b.embedded(3)
-    pts = np.vstack([a3.control_points, b3.control_points])
+    a3 = check_curve(a, "a").embedded(3)
+    b3 = check_curve(b, "b").embedded(3)
+    phi = ReliefPerspective(k)  # checks the span k
+    t = _resolve_tolerance(check_tol(tol), a3, b3)
     if frame is None:
-        frame = _first_frame(pts)
-    t = resolve_tolerance(check_tol(tol), a3, b3)
-    a_f = a3.transformed(frame.matrix)
-    b_f = b3.transformed(frame.matrix)
-    phi = ReliefPerspective(k)
+        frame = _first_frame(np.vstack([a3.control_points, b3.control_points]))
+    else:
+        frame = _check_frame(frame)
+    a_f = _framed(a3, frame, "a")
+    b_f = _framed(b3, frame, "b")
     a_r = phi.apply(a_f)
     b_r = phi.apply(b_f)
     return ReliefScheme(
@@ -357,7 +427,7 @@ def _boxes_near(points: list[FloatArray], tol: float) -> NDArray[np.bool_]:
 
 def _self_rows(curve: RationalBezier, tol: float, budget: int) -> FloatArray:
     """Self-intersections: split into monotone pieces, intersect every pair of pieces."""
-    if is_point_like(curve, tol):
+    if _is_point_like(curve, tol):
         return np.empty((0, SPACE_COLS))  # a point has no self-intersection
     pieces = monotone_pieces(curve, tol, _monotone, 12)
     near = _boxes_near([p.control_points for _, _, p in pieces], tol)
@@ -466,7 +536,7 @@ def intersect_space(
     nbudget = check_budget(budget)
     given = check_tol(tol)
     if b is None:
-        tol_s = resolve_tolerance(given, a3)
+        tol_s = _resolve_tolerance(given, a3)
         items, boxes = space_results(_self_rows(a3, tol_s, nbudget))
         return _finished(refine_self(a3, items, tol_s), boxes, tol_s, on_budget)
     return space_pair(a3, b, given, nbudget, on_budget)
@@ -488,7 +558,7 @@ def space_pair(a: RationalBezier, b: RationalBezier, tol: float | None, budget: 
     ha, hb = a.homogeneous, b.homogeneous
     if ha.shape[1] != 4 or hb.shape[1] != 4:  # a planar curve goes in z = 0 (a space curve as it is)
         return space_pair(a.embedded(3), b.embedded(3), tol, budget, on_budget, resolved)
-    tol_s = resolved or (_sampled_tolerance((a, b)) if tol is None else None) or resolve_tolerance(tol, a, b)
+    tol_s = resolved or (_sampled_tolerance((a, b)) if tol is None else None) or _resolve_tolerance(tol, a, b)
     rows = space_pair_rows(ha, hb, tol_s, budget, 2.0 * tol_s)
     if rows is None:
         whole = whole_overlap(a, b, tol_s)  # coincident curves (closed ones too) by geometry
