@@ -20,6 +20,7 @@ grows with the number of places, not with the square of the points at one place.
 
 from __future__ import annotations
 
+import math
 import numbers
 from collections.abc import Sequence
 
@@ -313,14 +314,34 @@ def cluster_points(
 
 def _cluster_points(points: object, tol: float, links: object) -> IntArray:
     """:func:`cluster_points` of points and links known to be valid (the CAD layer's call: no checks)."""
-    pts = np.asarray(points, dtype=np.float64)
-    p = float(tol)
+    pts, p = _within_range(np.asarray(points, dtype=np.float64), float(tol))
     extra = np.asarray(links, dtype=np.int64).reshape(-1, 2)
     node, lo, hi = _tight_groups(pts, p)
     edges = [node[extra]] if extra.shape[0] else []
     if lo.shape[0] > 1:
         edges.append(_close_groups(pts, node, lo, hi, p))
     return _components(lo.shape[0], np.vstack(edges) if edges else np.empty((0, 2), dtype=np.int64))[node]
+
+
+_HUGE = 2.0**500  # coordinates beyond this may overflow when squared in a norm
+
+
+def _within_range(pts: FloatArray, tol: float) -> tuple[FloatArray, float]:
+    """``pts`` and ``tol`` scaled by one power of two (exact) when the points are huge, else as they are.
+
+    The norms of point differences square them: beyond about 1e154 they overflow to inf and
+    every point would be apart. Scaled by ``2**-e`` (``e`` the exponent of the largest
+    coordinate) every difference and ``tol`` keep their bits, so every comparison its answer.
+
+    >>> pts, tol = _within_range(np.array([[1e300, 0.0], [-1e300, 1e299]]), 1e290)
+    >>> float(np.max(np.abs(pts))) <= 1.0, tol == 1e290 * float(np.max(np.abs(pts))) / 1e300
+    (True, True)
+    """
+    big = float(np.max(np.abs(pts), initial=0.0))
+    if not big > _HUGE:
+        return pts, tol
+    e = math.frexp(big)[1]
+    return np.ldexp(pts, -e), math.ldexp(tol, -e)
 
 
 def _tight_groups(pts: FloatArray, tol: float) -> tuple[IntArray, FloatArray, FloatArray]:

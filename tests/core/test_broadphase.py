@@ -162,3 +162,13 @@ def test_a_tol_below_the_rounding_of_the_coordinates_joins_no_distinct_points():
     a group whose points are not all within tol is split into its points."""
     labels = cluster_points([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [2.0, 0.0]], 1e-310)
     assert labels.tolist() == [0, 1, 2, 2]
+
+
+@pytest.mark.parametrize("scale", [1e150, 1e200, 1e300])
+def test_clusters_do_not_depend_on_the_scale_up_to_the_float_range(scale):
+    """The points' norms square their differences: beyond 1e154 they overflowed and every point stood apart."""
+    rng = np.random.default_rng(4)
+    pts = np.repeat(rng.random((25, 2)) * 100.0, 4, axis=0) + rng.random((100, 2)) * 1e-3
+    base = cluster_points(pts, 1e-2)
+    assert len(set(base.tolist())) == 25
+    assert cluster_points(pts * scale, 1e-2 * scale).tolist() == base.tolist()
