@@ -180,8 +180,8 @@ def box_pairs(lows: object, highs: object, *, pad: float = 0.0) -> IntArray:
 
 def _box_pairs(lows: object, highs: object, pad: float) -> IntArray:
     """:func:`box_pairs` of boxes known to be valid (the CAD layer's calls: no checks)."""
-    lo, hi = np.asarray(lows, dtype=np.float64), np.asarray(highs, dtype=np.float64)
-    p = float(pad)
+    p, (lo, hi) = _within_range(float(pad), np.asarray(lows, dtype=np.float64),
+                                np.asarray(highs, dtype=np.float64))
     i, j = _cell_pairs(lo, hi, p)
     a, b = np.minimum(i, j), np.maximum(i, j)
     keep = (a != b) & _touch(lo, hi, lo, hi, a, b, p)  # the lower index as ``a`` (one rounding)
@@ -232,9 +232,8 @@ def box_pairs_between(lows_a: object, highs_a: object, lows_b: object, highs_b: 
 def _box_pairs_between(lows_a: object, highs_a: object, lows_b: object, highs_b: object,
                        pad: float) -> IntArray:
     """:func:`box_pairs_between` of boxes known to be valid (the CAD layer's calls: no checks)."""
-    lo_a, hi_a = np.asarray(lows_a, dtype=np.float64), np.asarray(highs_a, dtype=np.float64)
-    lo_b, hi_b = np.asarray(lows_b, dtype=np.float64), np.asarray(highs_b, dtype=np.float64)
-    p = float(pad)
+    p, (lo_a, hi_a, lo_b, hi_b) = _within_range(float(pad), *(np.asarray(x, dtype=np.float64)
+                                                               for x in (lows_a, highs_a, lows_b, highs_b)))
     if lo_a.shape[0] == 0 or lo_b.shape[0] == 0:
         return np.empty((0, 2), dtype=np.int64)
     na = lo_a.shape[0]
@@ -314,7 +313,7 @@ def cluster_points(
 
 def _cluster_points(points: object, tol: float, links: object) -> IntArray:
     """:func:`cluster_points` of points and links known to be valid (the CAD layer's call: no checks)."""
-    pts, p = _within_range(np.asarray(points, dtype=np.float64), float(tol))
+    p, (pts,) = _within_range(float(tol), np.asarray(points, dtype=np.float64))
     extra = np.asarray(links, dtype=np.int64).reshape(-1, 2)
     node, lo, hi = _tight_groups(pts, p)
     edges = [node[extra]] if extra.shape[0] else []
@@ -326,22 +325,23 @@ def _cluster_points(points: object, tol: float, links: object) -> IntArray:
 _HUGE = 2.0**500  # coordinates beyond this may overflow when squared in a norm
 
 
-def _within_range(pts: FloatArray, tol: float) -> tuple[FloatArray, float]:
-    """``pts`` and ``tol`` scaled by one power of two (exact) when the points are huge, else as they are.
+def _within_range(tol: float, *arrays: FloatArray) -> tuple[float, list[FloatArray]]:
+    """``tol`` and the ``arrays``, scaled by one power of two (exact) when they are huge; else as they are.
 
-    The norms of point differences square them: beyond about 1e154 they overflow to inf and
-    every point would be apart. Scaled by ``2**-e`` (``e`` the exponent of the largest
-    coordinate) every difference and ``tol`` keep their bits, so every comparison its answer.
+    The norms of point differences square them, and box corners minus their origin may
+    overflow: beyond about 1e154 every point would stand apart, and grid cells would be
+    computed from inf. Scaled by ``2**-e`` (``e`` the exponent of the largest coordinate or
+    ``tol``) every difference and ``tol`` keep their bits, so every comparison its answer.
 
-    >>> pts, tol = _within_range(np.array([[1e300, 0.0], [-1e300, 1e299]]), 1e290)
+    >>> tol, (pts,) = _within_range(1e290, np.array([[1e300, 0.0], [-1e300, 1e299]]))
     >>> float(np.max(np.abs(pts))) <= 1.0, tol == 1e290 * float(np.max(np.abs(pts))) / 1e300
     (True, True)
     """
-    big = float(np.max(np.abs(pts), initial=0.0))
+    big = max([abs(tol)] + [float(np.max(np.abs(a), initial=0.0)) for a in arrays])
     if not big > _HUGE:
-        return pts, tol
+        return tol, list(arrays)
     e = math.frexp(big)[1]
-    return np.ldexp(pts, -e), math.ldexp(tol, -e)
+    return math.ldexp(tol, -e), [np.ldexp(a, -e) for a in arrays]
 
 
 def _tight_groups(pts: FloatArray, tol: float) -> tuple[IntArray, FloatArray, FloatArray]:

@@ -172,3 +172,20 @@ def test_clusters_do_not_depend_on_the_scale_up_to_the_float_range(scale):
     base = cluster_points(pts, 1e-2)
     assert len(set(base.tolist())) == 25
     assert cluster_points(pts * scale, 1e-2 * scale).tolist() == base.tolist()
+
+
+def test_box_pairs_near_the_float_range_are_those_of_the_scaled_boxes():
+    """Corners minus their origin overflowed to inf: the grid cells were cast from NaN (a warning, and garbage)."""
+    import warnings
+
+    rng = np.random.default_rng(1)
+    lo = (rng.random((300, 2)) * 2.0 - 1.0) * 1.7e308
+    hi = lo + rng.random((300, 2)) * 1e307
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        pairs = box_pairs(lo, hi)
+        between = box_pairs_between(lo[:150], hi[:150], lo[150:], hi[150:])
+    assert pairs.tolist() == box_pairs(lo * 2.0**-1000, hi * 2.0**-1000).tolist()
+    assert between.tolist() == box_pairs_between(lo[:150] * 2.0**-1000, hi[:150] * 2.0**-1000,
+                                                  lo[150:] * 2.0**-1000, hi[150:] * 2.0**-1000).tolist()
+    assert len(pairs) > 0
