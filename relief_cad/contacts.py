@@ -35,6 +35,7 @@ from __future__ import annotations
 
 import functools
 import math
+import numbers
 from collections.abc import Sequence
 from fractions import Fraction
 from typing import Literal
@@ -42,6 +43,7 @@ from typing import Literal
 import numpy as np
 from numpy.polynomial import polynomial as P
 
+from ._checks import check_curve, check_flag, check_param, check_tol
 from ._kernels.batch import ends_match
 from ._kernels.bezier import max_abs
 from ._kernels.certify import fold_bisect
@@ -50,6 +52,7 @@ from ._kernels.polish import _end_ratio, foot_newton, foot_seeds, surely_far
 from ._kernels.polish import _spread as _spread_one
 from ._types import FloatArray
 from .curves import RationalBezier, _decasteljau
+from .errors import InputTypeError, InvalidInputError, ShapeError, ToleranceTypeError
 from .results import Intersection, Overlap, Result
 from .tolerances import _rounding_floor
 
@@ -73,6 +76,80 @@ END_TANGENT_SIN: float = 1e-7
 _SAMPLES_PER_DEGREE = 3
 _NEWTON_STEPS = 40  # linear convergence (ratio 2/3) at a fold tip needs ~35 steps
 _SINGULAR = 1e-9  # |derivative| / size below which the first non-vanishing derivative is used
+
+
+# ---------------------------------------------------------------------------- input checks
+# Only the public functions check (through relief_cad._checks); relief_cad's own calls take the
+# private ``_f`` of each, unchecked. relief_cad.pieces uses _check_tol and _check_unit too.
+def _check_tol(tol: object) -> float:
+    """``tol`` as a distance > 0 in model units: :func:`~relief_cad._checks.check_tol`, ``None`` refused.
+
+    >>> _check_tol(None)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ToleranceTypeError: tol should be a distance > 0 in model units (a float), not NoneType
+    """
+    value = check_tol(tol)
+    if value is None:  # no default here: the caller's tolerance is already resolved
+        raise ToleranceTypeError("tol should be a distance > 0 in model units (a float), not NoneType")
+    return value
+
+
+def _check_unit(t: object, name: str) -> float:
+    """``t`` as a curve parameter: a finite float in ``[0, 1]``.
+
+    >>> _check_unit(1.5, "t")
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InvalidInputError: t should be a parameter in [0, 1], not 1.5
+    """
+    value = check_param(t, name)
+    if not 0.0 <= value <= 1.0:
+        raise InvalidInputError(f"{name} should be a parameter in [0, 1], not {value!r}")
+    return value
+
+
+def _check_side(side: object) -> Literal[1, -1]:
+    """``side`` when it is the int ``1`` or ``-1`` (not a bool, not a float)."""
+    if isinstance(side, bool) or not isinstance(side, numbers.Integral):
+        raise InputTypeError(f"side should be 1 or -1 (an int), not {type(side).__name__}")
+    if side not in (1, -1):
+        raise InvalidInputError(f"side should be 1 or -1, not {int(side)}")
+    return 1 if side == 1 else -1
+
+
+def _check_pair(a: object, b: object) -> tuple[RationalBezier, RationalBezier]:
+    """``a`` and ``b`` when they are curves of one dimension (2 or 3)."""
+    ca, cb = check_curve(a, "a"), check_curve(b, "b")
+    if ca.dim != cb.dim:
+        raise ShapeError(f"a and b should be curves of one dimension, not {ca.dim}-D and {cb.dim}-D")
+    return ca, cb
+
+
+def _check_results(items: object) -> Sequence[Result]:
+    """``items`` when it is a sequence (a list, a tuple, an IntersectionList) of Intersection and Overlap."""
+    if isinstance(items, (str, bytes)) or not isinstance(items, Sequence):
+        raise InputTypeError("items should be a sequence of Intersection and Overlap, "
+                             f"not {type(items).__name__}")
+    for i, r in enumerate(items):
+        if not isinstance(r, (Intersection, Overlap)):
+            raise InputTypeError(f"items[{i}] should be an Intersection or an Overlap, "
+                                 f"not {type(r).__name__}")
+    return items
+
+
+def _check_pieces(pieces: object) -> Sequence[tuple[Overlap, bool]]:
+    """``pieces`` when it is a sequence of ``(Overlap, bool)`` pairs (tuples or lists)."""
+    if isinstance(pieces, (str, bytes)) or not isinstance(pieces, Sequence):
+        raise InputTypeError("pieces should be a sequence of (Overlap, bool) pairs, "
+                             f"not {type(pieces).__name__}")
+    for i, p in enumerate(pieces):
+        pair = isinstance(p, (tuple, list))
+        if not (pair and len(p) == 2 and isinstance(p[0], Overlap)):
+            what = f"({', '.join(type(x).__name__ for x in p)})" if pair else type(p).__name__
+            raise InputTypeError(f"pieces[{i}] should be an (Overlap, bool) pair, not {what}")
+        check_flag(p[1], f"pieces[{i}][1]")
+    return pieces
 
 
 # ---------------------------------------------------------------------------- distance to a curve
@@ -349,12 +426,29 @@ def self_overlaps(pieces: Sequence[tuple[Overlap, bool]],
         Sorted by ``t``, chained overlaps (one's end is the next one's start, ``u`` running the
         same way) merged.
 
+    Raises
+    ------
+    InputTypeError
+        If ``pieces`` is not a sequence of ``(Overlap, bool)`` pairs (the message names the first
+        bad one), or ``curve`` is neither None nor a RationalBezier.
+
     Examples
     --------
     >>> parts = [(Overlap(t=(0.0, 0.25), u=(1.0, 0.75)), True), (Overlap(t=(0.25, 0.5), u=(0.75, 0.5)), True)]
     >>> self_overlaps(parts)
     [Overlap(t=(0.0, 0.5), u=(1.0, 0.5), kind='overlap')]
+    >>> self_overlaps([Overlap(t=(0.0, 0.25), u=(1.0, 0.75))])
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InputTypeError: pieces[0] should be an (Overlap, bool) pair, not Overlap
     """
+    checked = _check_pieces(pieces)
+    return _self_overlaps(checked, None if curve is None else check_curve(curve, "curve"))
+
+
+def _self_overlaps(pieces: Sequence[tuple[Overlap, bool]],
+                   curve: RationalBezier | None = None) -> list[Overlap]:
+    """:func:`self_overlaps` of valid input (relief_cad's own calls: no checks)."""
     out: list[Overlap] = []
     for o in sorted((o for o, _ in pieces), key=lambda o: o.t):
         k = next((k for k, q in enumerate(out) if _continues(q, o) and not _turns_at(curve, q)), None)
@@ -381,7 +475,7 @@ def _turns_at(curve: RationalBezier | None, q: Overlap) -> bool:
 
 def _turns(c: RationalBezier, x: float) -> bool:
     """True when ``c`` turns back at ``x`` inside its range: it leaves ``c(x)`` the way it came."""
-    return 0.0 < x < 1.0 and float(np.dot(curve_direction(c, x, -1), curve_direction(c, x, 1))) > 0.0
+    return 0.0 < x < 1.0 and float(np.dot(_curve_direction(c, x, -1), _curve_direction(c, x, 1))) > 0.0
 
 
 def _fold(c: RationalBezier, t: float, u: float) -> float | None:
@@ -465,16 +559,34 @@ def refine_self(c: RationalBezier, items: Sequence[Result], tol: float) -> list[
         Sorted by ``t``; a stretch run twice (out and back) is one :class:`Overlap` with
         ``t < u``, reaching the fold point where the curve turns back.
 
+    Raises
+    ------
+    InputTypeError
+        If ``c`` is not a RationalBezier, or ``items`` not a sequence of Intersection and
+        Overlap (the message names the first bad item).
+    ToleranceError
+        If ``tol`` is not a finite distance > 0 (:class:`~relief_cad.errors.ToleranceTypeError`
+        if it is not a real number).
+
     Examples
     --------
     >>> c = RationalBezier([[0, 0, 0], [1, 1, 1], [1, 1, 1], [0, 0, 0]])
     >>> pts = [Intersection(x, 1.0 - x, c(x), "tangent") for x in (0.0, 0.25, 0.375)]
     >>> refine_self(c, pts, 1e-9)
     [Overlap(t=(0.0, 0.5), u=(1.0, 0.5), kind='overlap')]
+    >>> refine_self(c, pts, -1e-9)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ToleranceError: tol should be a finite distance > 0 in model units, not -1e-09
     """
+    return _refine_self(check_curve(c, "c"), _check_results(items), _check_tol(tol))
+
+
+def _refine_self(c: RationalBezier, items: Sequence[Result], tol: float) -> list[Result]:
+    """:func:`refine_self` of valid input (relief_cad's own calls: no checks)."""
     exp = _exponent_of(c)
     if exp:
-        return _rescaled(refine_self(_scaled(c, exp), _rescaled(items, -exp), math.ldexp(tol, -exp)), exp)
+        return _rescaled(_refine_self(_scaled(c, exp), _rescaled(items, -exp), math.ldexp(tol, -exp)), exp)
     pts = [r for r in items if isinstance(r, Intersection)]
     ovs = [r for r in items if isinstance(r, Overlap)]
     chained = (len(pts) >= 2 and any(p.kind == "tangent" for p in pts)) or (ovs and pts)
@@ -483,7 +595,7 @@ def refine_self(c: RationalBezier, items: Sequence[Result], tol: float) -> list[
     cands = (_chains(c, c, pts, ovs, tol, ends=False) if chained else []) + ovs
     # o.t == o.u: the curve against itself, not a retraced stretch
     found = [(_to_fold(c, o, tol), True) for o in cands if o.t != o.u]
-    merged = _drop_nested(self_overlaps(found, c))
+    merged = _drop_nested(_self_overlaps(found, c))
     res: list[Result] = [p for p in pts if not _covered(p, merged)]
     res += merged
     return _by_t(res)
@@ -531,7 +643,15 @@ def curve_direction(c: RationalBezier, t: float, side: Literal[1, -1] = 1) -> Fl
     Returns
     -------
     ndarray, shape (d,)
-        A unit vector (zeros for a curve that is one point on that side).
+        A unit vector (zeros for a curve that is one point on that side, or at an end with
+        ``side`` pointing off the curve).
+
+    Raises
+    ------
+    InputTypeError
+        If ``c`` is not a RationalBezier, ``t`` not a real number or ``side`` not an int.
+    NonFiniteError, InvalidInputError
+        If ``t`` is NaN or infinite, or outside ``[0, 1]``; if ``side`` is neither 1 nor -1.
 
     Examples
     --------
@@ -540,7 +660,16 @@ def curve_direction(c: RationalBezier, t: float, side: Literal[1, -1] = 1) -> Fl
     [1.0, 0.0]
     >>> curve_direction(c, 1.0, side=-1).tolist()
     [0.0, -1.0]
+    >>> curve_direction(c, 0.5, side=0)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InvalidInputError: side should be 1 or -1, not 0
     """
+    return _curve_direction(check_curve(c, "c"), _check_unit(t, "t"), _check_side(side))
+
+
+def _curve_direction(c: RationalBezier, t: float, side: Literal[1, -1] = 1) -> FloatArray:
+    """:func:`curve_direction` of valid input (relief_cad's own calls: no checks)."""
     if (t >= 1.0 and side == 1) or (t <= 0.0 and side == -1):
         return np.zeros(c.dim)
     if 0.0 < t < 1.0:
@@ -577,9 +706,9 @@ def _end_kind(a: RationalBezier, b: RationalBezier, p: Intersection) -> Intersec
     sides_b: tuple[Literal[1, -1], ...] = (1,) if p.u <= 0.0 else (-1,) if p.u >= 1.0 else (1, -1)
     sines = []
     for sa in sides_a:
-        da = curve_direction(a, p.t, sa)
+        da = _curve_direction(a, p.t, sa)
         for sb in sides_b:
-            db = curve_direction(b, p.u, sb)
+            db = _curve_direction(b, p.u, sb)
             sines.append(float(np.hypot.reduce(np.cross(da, db))) if a.dim == 3
                          else abs(float(da[0] * db[1] - da[1] * db[0])))
     kind: Literal["crossing", "tangent"] = "tangent" if min(sines) < END_TANGENT_SIN else "crossing"
@@ -752,14 +881,32 @@ def whole_overlap(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap |
     Checked before clipping (coincident curves are the clipping's slowest case): the end points
     must match within ``tol`` (a degree-elevated or rescaled copy may move them by a rounding), so
     the test costs two comparisons for every other pair. Closed curves match at both ends either
-    way round; the sense is taken from where interior points of ``a`` fall on ``b``.
+    way round; the sense is taken from where interior points of ``a`` fall on ``b``. Curves of
+    different dimensions never match.
+
+    Raises
+    ------
+    InputTypeError
+        If ``a`` or ``b`` is not a RationalBezier.
+    ToleranceError
+        If ``tol`` is not a finite distance > 0 (:class:`~relief_cad.errors.ToleranceTypeError`
+        if it is not a real number).
 
     Examples
     --------
     >>> c = RationalBezier([[0, 0], [1, 2], [2, 0]])
     >>> whole_overlap(c, c.elevate(2), 1e-9)
     Overlap(t=(0.0, 1.0), u=(0.0, 1.0), kind='overlap')
+    >>> whole_overlap(c, c.control_points, 1e-9)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InputTypeError: b should be a RationalBezier, not ndarray
     """
+    return _whole_overlap(check_curve(a, "a"), check_curve(b, "b"), _check_tol(tol))
+
+
+def _whole_overlap(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap | None:
+    """:func:`whole_overlap` of valid input (relief_cad's own calls: no checks)."""
     if not _ends_may_match(a.control_points, b.control_points, 2.0 * tol):
         return None  # the answer for almost every pair, from eight to twelve scalar reads
     copy = _exact_copy(a, b, tol)
@@ -767,7 +914,7 @@ def whole_overlap(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap |
         return copy
     exp = _exponent_of(a, b)
     if exp:
-        return whole_overlap(_scaled(a, exp), _scaled(b, exp), math.ldexp(tol, -exp))
+        return _whole_overlap(_scaled(a, exp), _scaled(b, exp), math.ldexp(tol, -exp))
     pa, pb = a.control_points, b.control_points
     if pa.shape[1] != pb.shape[1]:
         return None
@@ -834,12 +981,30 @@ def needs_refining(a: RationalBezier, b: RationalBezier, items: Sequence[Result]
     kernel gives them; overlaps, tangent contacts and end meetings at a repeated end control
     point are not.
 
+    Raises
+    ------
+    InputTypeError
+        If ``a`` or ``b`` is not a RationalBezier, or ``items`` not a sequence of Intersection
+        and Overlap (the message names the first bad item).
+    ShapeError
+        If ``a`` and ``b`` are of different dimensions.
+
     Examples
     --------
     >>> line = RationalBezier([[0, 0], [1, 1]])
     >>> needs_refining(line, line, [Intersection(0.5, 0.5, line(0.5), "crossing")])
     False
+    >>> needs_refining(line, line, [(0.5, 0.5)])
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InputTypeError: items[0] should be an Intersection or an Overlap, not tuple
     """
+    ca, cb = _check_pair(a, b)
+    return _needs_refining(ca, cb, _check_results(items))
+
+
+def _needs_refining(a: RationalBezier, b: RationalBezier, items: Sequence[Result]) -> bool:
+    """:func:`needs_refining` of valid input (relief_cad's own calls: no checks)."""
     for r in items:  # a plain loop: this runs on every pair with results (the kind of an Overlap
         # is "overlap"), and an end test only where a parameter is exactly 0 or 1
         if r.kind != "crossing":
@@ -874,6 +1039,17 @@ def refine_contacts(a: RationalBezier, b: RationalBezier, items: Sequence[Result
         meetings at singular points classified by their first non-vanishing derivatives, and
         interior tangent contacts located on the derivative system.
 
+    Raises
+    ------
+    InputTypeError
+        If ``a`` or ``b`` is not a RationalBezier, or ``items`` not a sequence of Intersection
+        and Overlap (the message names the first bad item).
+    ShapeError
+        If ``a`` and ``b`` are of different dimensions.
+    ToleranceError
+        If ``tol`` is not a finite distance > 0 (:class:`~relief_cad.errors.ToleranceTypeError`
+        if it is not a real number).
+
     Examples
     --------
     >>> line = RationalBezier([[0, 0], [1, 1]])
@@ -881,10 +1057,22 @@ def refine_contacts(a: RationalBezier, b: RationalBezier, items: Sequence[Result
     >>> from relief_cad import intersect
     >>> refine_contacts(line, cubic, intersect(line, cubic), 1e-9)
     [Overlap(t=(0.0, 1.0), u=(0.0, 1.0), kind='overlap')]
+    >>> refine_contacts(line, cubic, intersect(line, cubic), float("nan"))
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ToleranceError: tol should be a finite distance > 0 in model units, not nan
     """
+    ca, cb = _check_pair(a, b)
+    return _refine_contacts(ca, cb, _check_results(items), _check_tol(tol))
+
+
+def _refine_contacts(a: RationalBezier, b: RationalBezier, items: Sequence[Result],
+                     tol: float) -> list[Result]:
+    """:func:`refine_contacts` of valid input (relief_cad's own calls: no checks)."""
     exp = _exponent_of(a, b)
     if exp:
-        out = refine_contacts(_scaled(a, exp), _scaled(b, exp), _rescaled(items, -exp), math.ldexp(tol, -exp))
+        out = _refine_contacts(_scaled(a, exp), _scaled(b, exp), _rescaled(items, -exp),
+                               math.ldexp(tol, -exp))
         return _rescaled(out, exp)
     out = _overlaps(a, b, list(items), tol)
     pts = [r for r in out if isinstance(r, Intersection)]

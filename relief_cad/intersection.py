@@ -88,7 +88,7 @@ from ._kernels import (
 from ._kernels.rows import batch_lists, rows_to_list
 from ._pool import run_ordered
 from ._types import FloatArray
-from .contacts import needs_refining, refine_contacts, refine_self, self_overlaps, whole_overlap
+from .contacts import _needs_refining, _refine_contacts, _refine_self, _self_overlaps, _whole_overlap
 from .curves import RationalBezier
 from .errors import (
     InputTypeError,
@@ -96,8 +96,8 @@ from .errors import (
     NonFiniteError,
     ShapeError,
 )
-from .pieces import along_chord, monotone_pieces, one_place
-from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, finish
+from .pieces import _along_chord, _monotone_pieces, _one_place
+from .results import Intersection, IntersectionList, Overlap, ParameterBox, Result, _finish
 from .space import intersect_space, space_pair
 from .tolerances import (
     _pairs_default_tolerances,
@@ -134,9 +134,9 @@ def _planar(pa: FloatArray, wa: FloatArray, pb: FloatArray, wb: FloatArray, tol:
 
 def _refined(a: RationalBezier, b: RationalBezier, res: IntersectionList, tol: float) -> IntersectionList:
     """The kernel's result decided by :func:`relief_cad.contacts.refine_contacts`."""
-    if not needs_refining(a, b, res):
+    if not _needs_refining(a, b, res):
         return res
-    return IntersectionList(refine_contacts(a, b, res, tol), res.unresolved)
+    return IntersectionList(_refine_contacts(a, b, res, tol), res.unresolved)
 
 
 def _split_homogeneous(h: FloatArray, name: str) -> tuple[FloatArray, FloatArray]:
@@ -193,7 +193,7 @@ def _simple_piece(p: FloatArray) -> bool:
     Then the (rational) curve is monotone along some direction and cannot cross itself.
     :func:`relief_cad.pieces.along_chord` decides most pieces first (its half-plane is the chord's).
     """
-    if along_chord(p.tolist()):
+    if _along_chord(p.tolist()):
         return True
     i, j = _chord_pairs(p.shape[0])
     v = p[j] - p[i]
@@ -208,7 +208,7 @@ def _simple_piece(p: FloatArray) -> bool:
 
 def _self_planar(curve: RationalBezier, tol: float, budget: int) -> IntersectionList:
     """Self-intersections: split into monotone pieces, intersect pairs of pieces."""
-    pieces = monotone_pieces(curve, tol, _simple_piece, 10)
+    pieces = _monotone_pieces(curve, tol, _simple_piece, 10)
     items: list[Result] = []
     boxes: list[ParameterBox] = []
     overlaps: list[tuple[Overlap, bool]] = []
@@ -224,7 +224,7 @@ def _self_planar(curve: RationalBezier, tol: float, budget: int) -> Intersection
                     continue
                 t = s0 + r.t * (s1 - s0) if r.t not in (0.0, 1.0) else (s0 if r.t == 0.0 else s1)
                 u = r0 + r.u * (r1 - r0) if r.u not in (0.0, 1.0) else (r0 if r.u == 0.0 else r1)
-                if abs(t - u) <= 1e-7 or one_place(curve, t, u, tol):
+                if abs(t - u) <= 1e-7 or _one_place(curve, t, u, tol):
                     continue  # the joint of adjacent pieces, or both sides of a sharp tip
                 if any(isinstance(q, Intersection) and abs(q.t - t) <= 1e-9 and abs(q.u - u) <= 1e-9
                        for q in items):
@@ -233,7 +233,7 @@ def _self_planar(curve: RationalBezier, tol: float, budget: int) -> Intersection
             for bx in sub.unresolved:
                 boxes.append(ParameterBox(s0 + bx.t0 * (s1 - s0), s0 + bx.t1 * (s1 - s0),
                                           r0 + bx.u0 * (r1 - r0), r0 + bx.u1 * (r1 - r0)))
-    return IntersectionList(refine_self(curve, [*items, *self_overlaps(overlaps, curve)], tol), boxes)
+    return IntersectionList(_refine_self(curve, [*items, *_self_overlaps(overlaps, curve)], tol), boxes)
 
 
 def _global_overlap(r: Overlap, s0: float, s1: float, r0: float, r1: float) -> Overlap:
@@ -313,7 +313,7 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
         ftol = _resolve_tolerance(check_tol(tol), a)
         # the curve of a's own points and weights, as built from them (the same rows for every a)
         curve = RationalBezier._rebuilt(a.control_points, a.weights)
-        return finish(_with_tol(_self_planar(curve, ftol, nbudget), ftol), on_budget)
+        return _finish(_with_tol(_self_planar(curve, ftol, nbudget), ftol), on_budget)
     # the default, or the given tol raised to the data's rounding level (one rule: resolve_tolerance;
     # _sampled_tolerance is its compiled default for two curves)
     ftol = (_sampled_tolerance((a, b)) if tol is None else None) or _resolve_tolerance(check_tol(tol), a, b)
@@ -325,14 +325,14 @@ def intersect(a: RationalBezier, b: RationalBezier | None = None, *, tol: float 
     if got is None:  # a space curve: the relief scheme, with the tolerance resolved above
         return space_pair(a, b, check_tol(tol), nbudget, on_budget, ftol)
     if got is False:
-        whole = whole_overlap(a, b, ftol)
+        whole = _whole_overlap(a, b, ftol)
         if whole is not None:
             return IntersectionList([whole], tol_used=ftol)
         got = planar_pair(a, b, ftol, nbudget, False)
     res: IntersectionList
     res, final = got
-    if not final and (res.unresolved or needs_refining(a, b, res)):
-        res = finish(_with_tol(_refined(a, b, res, ftol), ftol), on_budget)
+    if not final and (res.unresolved or _needs_refining(a, b, res)):
+        res = _finish(_with_tol(_refined(a, b, res, ftol), ftol), on_budget)
     return res
 
 
@@ -419,7 +419,7 @@ def intersect_line(curve: RationalBezier, point: Sequence[float] | FloatArray,
         else:  # a stretch of the curve along the line: u is the line's parameter at its ends
             u0, u1 = ((float((curve.evaluate(t) - foot) @ e) + shift) / length for t in r.t)
             items.append(Overlap(t=r.t, u=(u0, u1)))
-    return finish(IntersectionList(items, res.unresolved, ftol), on_budget)
+    return _finish(IntersectionList(items, res.unresolved, ftol), on_budget)
 
 
 def _line_results(curve: RationalBezier, foot: FloatArray, e: FloatArray, given: float | None,
@@ -466,9 +466,9 @@ def _batch_job(out: list[IntersectionList], start: int, part: list[tuple[Rationa
         lists, looks = batch_lists(rows, tols)  # by pair, each by t (the kernel's order)
         for j in looks:  # the pairs whose rows a budget left open or that refining may change
             listed, (a, b) = lists[j], pairs[j]
-            if listed.unresolved or needs_refining(a, b, listed):
-                lists[j] = finish(_with_tol(_refined(a, b, listed, listed.tol_used), listed.tol_used),
-                                  on_budget)
+            if listed.unresolved or _needs_refining(a, b, listed):
+                lists[j] = _finish(_with_tol(_refined(a, b, listed, listed.tol_used), listed.tol_used),
+                                   on_budget)
     except Exception as exc:  # noqa: BLE001 - raised by the caller, in order
         return rest, exc
     for k, listed in zip(taken, lists, strict=True):

@@ -20,9 +20,12 @@ from collections.abc import Callable
 
 import numpy as np
 
+from ._checks import as_real_array, check_count, check_curve, check_finite, check_flag
 from ._kernels.certify import fold_bisect
-from ._types import FloatArray
+from ._types import FloatArray, PointsLike
+from .contacts import _check_tol, _check_unit
 from .curves import RationalBezier
+from .errors import DegenerateCurveError, InputTypeError, InvalidInputError, ShapeError
 
 __all__ = ["along_chord", "monotone_pieces", "one_place"]
 
@@ -31,7 +34,7 @@ __all__ = ["along_chord", "monotone_pieces", "one_place"]
 _ALONG_MARGIN = 1e-6
 
 
-def along_chord(points: list[list[float]]) -> bool:
+def along_chord(points: PointsLike) -> bool:
     """True when every chord ``p_j - p_i`` (``i < j``) of the planar ``points`` runs along ``p_n - p_0``.
 
     "Along" is a positive dot product with the end-to-end chord beyond ``1e-6`` of the lengths'
@@ -40,13 +43,37 @@ def along_chord(points: list[list[float]]) -> bool:
     monotone along its chord, so it cannot cross itself: a cheap sufficient test, on Python floats,
     for the chords-in-a-half-plane test of the planar self-intersection (which then holds too, with
     the chord's half-plane), where most of a sketch's spans are decided in microseconds.
-    ``points`` is a list of ``[x, y]`` (m >= 2).
+    ``points`` is a list of ``[x, y]`` (m >= 2), or an array of shape ``(m, 2)``.
 
+    Raises
+    ------
+    InputTypeError
+        If ``points`` is not an array of real numbers (a curve, strings, a ragged list ...).
+    ShapeError
+        If ``points`` is not of shape ``(m, 2)`` with ``m >= 2``.
+    NonFiniteError
+        If a coordinate is NaN or infinite.
+
+    Examples
+    --------
     >>> along_chord([[0.0, 0.0], [1.0, 1.0], [2.0, 1.0], [3.0, 0.0]])      # an arch
     True
     >>> along_chord([[0.0, 0.0], [3.0, 1.0], [-1.0, 1.0], [2.0, 0.0]])     # a loop: it crosses itself
     False
+    >>> along_chord([[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]])
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ShapeError: points should have shape (m, 2) with m >= 2 (planar points), not (2, 3)
     """
+    pts = as_real_array(points, "points")
+    if pts.ndim != 2 or pts.shape[1] != 2 or pts.shape[0] < 2:
+        raise ShapeError(f"points should have shape (m, 2) with m >= 2 (planar points), not {pts.shape}")
+    check_finite(pts, "points")
+    return _along_chord(pts.tolist())
+
+
+def _along_chord(points: list[list[float]]) -> bool:
+    """:func:`along_chord` of valid input, a list of ``[x, y]`` floats (relief_cad's own calls)."""
     x0, y0 = points[0]
     dx = points[-1][0] - x0
     dy = points[-1][1] - y0
@@ -122,10 +149,38 @@ def one_place(curve: RationalBezier, t: float, u: float, tol: float) -> bool:
     a box that small. Pieces cut deep around the sharp tip of a near-cusp meet within tol on both
     sides of it (1.5e-6 apart in parameter, the arc between them 1e-12 long).
 
+    Raises
+    ------
+    InputTypeError
+        If ``curve`` is not a RationalBezier, or ``t`` or ``u`` not a real number.
+    NonFiniteError, InvalidInputError
+        If ``t`` or ``u`` is NaN or infinite, or outside ``[0, 1]``.
+    DegenerateCurveError
+        If ``t == u`` (no arc between them).
+    ToleranceError
+        If ``tol`` is not a finite distance > 0 (:class:`~relief_cad.errors.ToleranceTypeError`
+        if it is not a real number).
+
+    Examples
+    --------
     >>> c = RationalBezier([[0.0, 0.0], [2.0, 2.0], [0.0, 2.0000001], [2.0, 0.0]])
     >>> one_place(c, 0.4999985, 0.5000015, 1e-9), one_place(c, 0.2, 0.8, 1e-9)
     (True, False)
+    >>> one_place(c, 0.2, 1.5, 1e-9)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InvalidInputError: u should be a parameter in [0, 1], not 1.5
     """
+    checked = check_curve(curve, "curve")
+    tv, uv = _check_unit(t, "t"), _check_unit(u, "u")
+    if tv == uv:
+        raise DegenerateCurveError("t and u should be two different parameters (the ends of an arc), "
+                                   f"not both {tv!r}")
+    return _one_place(checked, tv, uv, _check_tol(tol))
+
+
+def _one_place(curve: RationalBezier, t: float, u: float, tol: float) -> bool:
+    """:func:`one_place` of valid input (relief_cad's own calls: no checks)."""
     arc = curve.segment(min(t, u), max(t, u)).control_points
     return float(np.ptp(arc, axis=0).max()) <= tol
 
@@ -142,17 +197,53 @@ def monotone_pieces(curve: RationalBezier, tol: float, simple: Callable[[FloatAr
     simple : callable
         ``simple(control_points)`` is True for a piece that cannot meet itself.
     max_depth : int
-        Cuts per piece before it may be kept as it is: once its control points span at most
-        ``tol`` (a loop in it is below the tolerance), or after :data:`_MOST_CUTS` cuts. A piece
-        still larger is cut on: a cubic with a loop of size 1, reparameterised by weights
-        ``1e4 ** i``, holds the whole loop within 3e-4 of its start, and a piece of width 2**-10
-        kept whole lost the double point.
+        Cuts per piece (0 to :data:`_MOST_CUTS`) before it may be kept as it is: once its control
+        points span at most ``tol`` (a loop in it is below the tolerance), or after
+        :data:`_MOST_CUTS` cuts. A piece still larger is cut on: a cubic with a loop of size 1,
+        reparameterised by weights ``1e4 ** i``, holds the whole loop within 3e-4 of its start,
+        and a piece of width 2**-10 kept whole lost the double point.
 
     Returns
     -------
     list of (float, float, RationalBezier)
         Each piece with its parameter range ``[s0, s1]`` on ``curve``; the ranges tile ``[0, 1]``.
+
+    Raises
+    ------
+    InputTypeError
+        If ``curve`` is not a RationalBezier, ``simple`` not callable (or it answers other than
+        True or False), or ``max_depth`` not an int.
+    DegreeError, InvalidInputError
+        If ``max_depth`` is negative, or above :data:`_MOST_CUTS` (48: a piece cut more is a point
+        of the parameter line, and the cap of :data:`_MOST_CUTS` cuts would no longer hold).
+    ToleranceError
+        If ``tol`` is not a finite distance > 0 (:class:`~relief_cad.errors.ToleranceTypeError`
+        if it is not a real number).
+
+    Examples
+    --------
+    >>> line = RationalBezier([[0.0, 0.0], [1.0, 1.0]])
+    >>> [(s0, s1) for s0, s1, _ in monotone_pieces(line, 1e-9, lambda p: True, 10)]
+    [(0.0, 1.0)]
+    >>> monotone_pieces(line, 1e-9, lambda p: True, 10.0)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InputTypeError: max_depth should be an int >= 0, not float
     """
+    checked, tol_v = check_curve(curve, "curve"), _check_tol(tol)
+    if not callable(simple):
+        raise InputTypeError("simple should be a callable (control points -> bool), "
+                             f"not {type(simple).__name__}")
+    depth = check_count(max_depth, "max_depth")
+    if depth > _MOST_CUTS:
+        raise InvalidInputError(f"max_depth should be an int from 0 to {_MOST_CUTS} (cuts per piece), "
+                                f"not {depth}")
+    return _monotone_pieces(checked, tol_v, lambda p: check_flag(simple(p), "simple(control_points)"), depth)
+
+
+def _monotone_pieces(curve: RationalBezier, tol: float, simple: Callable[[FloatArray], bool],
+                     max_depth: int) -> list[tuple[float, float, RationalBezier]]:
+    """:func:`monotone_pieces` of valid input (relief_cad's own calls: no checks)."""
     pieces: list[tuple[float, float, RationalBezier]] = []
     todo = [(0.0, 1.0, curve, 0, False)]
     while todo:

@@ -22,7 +22,7 @@ from typing import Literal, Union
 import numpy as np
 
 from ._types import FloatArray
-from .errors import BudgetExceededError
+from .errors import BudgetExceededError, InputTypeError
 
 __all__ = [
     "Intersection",
@@ -195,12 +195,29 @@ def finish(result: IntersectionList, on_budget: str) -> IntersectionList:
     ------
     BudgetExceededError
         Carrying the results found (``.partial``) and the open boxes (``.unresolved``).
+    InputTypeError
+        If ``result`` is not an :class:`IntersectionList`.
+    InvalidInputError
+        If ``on_budget`` is neither ``"raise"`` nor ``"return"``.
 
     Examples
     --------
     >>> finish(IntersectionList([]), "raise").complete
     True
+    >>> finish(IntersectionList([]), "ignore")
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InvalidInputError: on_budget should be 'raise' or 'return', not 'ignore'
     """
+    from ._checks import check_on_budget  # here, not above: _checks imports (through _kernels) this module
+
+    if not isinstance(result, IntersectionList):
+        raise InputTypeError(f"result should be an IntersectionList, not {type(result).__name__}")
+    return _finish(result, check_on_budget(on_budget))
+
+
+def _finish(result: IntersectionList, on_budget: str) -> IntersectionList:
+    """:func:`finish` of valid input (relief_cad's own calls: no checks)."""
     if result.unresolved and on_budget == "raise":
         raise BudgetExceededError(
             f"the iteration budget ran out with {len(result.unresolved)} parameter box(es) "

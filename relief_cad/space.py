@@ -68,12 +68,12 @@ from ._kernels import (
 from ._kernels.bezier import max_abs
 from ._kernels.rows import space_results
 from ._types import FloatArray
-from .contacts import needs_refining, range_exponent, refine_contacts, refine_self, whole_overlap
+from .contacts import _needs_refining, _refine_contacts, _refine_self, _whole_overlap, range_exponent
 from .curves import RationalBezier
 from .errors import BudgetExceededError, InputTypeError, InvalidInputError, ProjectionError, ShapeError
-from .pieces import monotone_pieces, one_place
+from .pieces import _monotone_pieces, _one_place
 from .relief import ReliefPerspective, central_projection
-from .results import Intersection, IntersectionList, ParameterBox, Result, finish
+from .results import Intersection, IntersectionList, ParameterBox, Result, _finish
 from .tolerances import _is_point_like, _resolve_tolerance, _sampled_tolerance
 
 __all__ = ["ReliefFrame", "ReliefScheme", "intersect_space", "relief_scheme"]
@@ -429,7 +429,7 @@ def _self_rows(curve: RationalBezier, tol: float, budget: int) -> FloatArray:
     """Self-intersections: split into monotone pieces, intersect every pair of pieces."""
     if _is_point_like(curve, tol):
         return np.empty((0, SPACE_COLS))  # a point has no self-intersection
-    pieces = monotone_pieces(curve, tol, _monotone, 12)
+    pieces = _monotone_pieces(curve, tol, _monotone, 12)
     near = _boxes_near([p.control_points for _, _, p in pieces], tol)
     rows: list[FloatArray] = []
     for i, (a0, a1, pa) in enumerate(pieces):
@@ -446,7 +446,7 @@ def _self_rows(curve: RationalBezier, tol: float, budget: int) -> FloatArray:
                 r[3] = a0 + r[3] * (a1 - a0)
                 r[2] = b0 + r[2] * (b1 - b0)
                 r[4] = b0 + r[4] * (b1 - b0)
-                if abs(r[2] - r[1]) <= 1e-9 or one_place(curve, r[1], r[2], tol):
+                if abs(r[2] - r[1]) <= 1e-9 or _one_place(curve, r[1], r[2], tol):
                     continue  # one place of the curve (both sides of a sharp tip)
                 rows.append(r)
     if not rows:
@@ -538,7 +538,7 @@ def intersect_space(
     if b is None:
         tol_s = _resolve_tolerance(given, a3)
         items, boxes = space_results(_self_rows(a3, tol_s, nbudget))
-        return _finished(refine_self(a3, items, tol_s), boxes, tol_s, on_budget)
+        return _finished(_refine_self(a3, items, tol_s), boxes, tol_s, on_budget)
     return space_pair(a3, b, given, nbudget, on_budget)
 
 
@@ -561,15 +561,15 @@ def space_pair(a: RationalBezier, b: RationalBezier, tol: float | None, budget: 
     tol_s = resolved or (_sampled_tolerance((a, b)) if tol is None else None) or _resolve_tolerance(tol, a, b)
     rows = space_pair_rows(ha, hb, tol_s, budget, 2.0 * tol_s)
     if rows is None:
-        whole = whole_overlap(a, b, tol_s)  # coincident curves (closed ones too) by geometry
+        whole = _whole_overlap(a, b, tol_s)  # coincident curves (closed ones too) by geometry
         if whole is not None:
             return IntersectionList([whole], tol_used=tol_s)
         rows = _pair(ha, hb, tol_s, budget)
     if rows.shape[0] == 0:  # most pairs: nothing to build, sort or check
         return IntersectionList((), (), tol_s)
     items, boxes = space_results(rows)
-    if needs_refining(a, b, items):
-        items = refine_contacts(a, b, items, tol_s)
+    if _needs_refining(a, b, items):
+        items = _refine_contacts(a, b, items, tol_s)
     return _finished(items, boxes, tol_s, on_budget)
 
 
@@ -583,7 +583,7 @@ def _finished(items: list[Result], boxes: list[ParameterBox], tol: float,
     """
     items = [_ends_exact(r) for r in items]
     items.sort(key=lambda r: r.t if isinstance(r, Intersection) else r.t[0])
-    return finish(IntersectionList(items, boxes, tol), on_budget)
+    return _finish(IntersectionList(items, boxes, tol), on_budget)
 
 
 _AT_END = 8.0 * 2.0**-52  # a parameter this close to 0 or 1 is the end: the point moves by a rounding

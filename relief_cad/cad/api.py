@@ -53,7 +53,7 @@ from ..clipping import _batch_rows
 from ..curves import RationalBezier
 from ..errors import InvalidInputError
 from ..intersection import DEFAULT_BUDGET
-from ..pieces import along_chord
+from ..pieces import _along_chord
 from ..results import Intersection, Overlap
 from ..tolerances import ModelTolerance, _floor_of_magnitude, default_tolerance
 from . import ocp
@@ -538,7 +538,7 @@ def _no_self_job(e: _EdgeInfo, i: int, planar: bool, tol: float) -> bool:
     if not planar:
         return False
     pts, _, offsets, _ = _planar_arrays(e)
-    return along_chord(pts[offsets[i]:offsets[i + 1]])
+    return _along_chord(pts[offsets[i]:offsets[i + 1]])
 
 
 _Packed = tuple[list[list[float]], list[float], list[int], list[list[float]]]

@@ -27,7 +27,6 @@ from relief_cad.errors import (
     InputTypeError,
     InvalidInputError,
     NonFiniteError,
-    ReliefCadError,
     ShapeError,
     ToleranceError,
     ToleranceTypeError,
@@ -47,6 +46,7 @@ from relief_cad.tolerances import (
     rounding_floor,
     size_of,
 )
+from tests.core._refused import refused
 
 NAN, INF = float("nan"), float("inf")
 A = RationalBezier([[0, 0], [1, 2], [2, 0]])
@@ -57,19 +57,6 @@ HI = LO + 1.0
 PTS = np.array([[0.0, 0.0], [5.0, 0.0], [0.0, 1e-9]])
 
 
-def refused(call: Callable[[], Any], error: type[Exception], *words: str) -> None:
-    """``call()`` raises exactly ``error``, a ReliefCadError and its built-in, naming ``words``."""
-    with pytest.raises(error) as info:
-        call()
-    exc = info.value
-    assert type(exc) is error, (type(exc), exc)
-    assert isinstance(exc, ReliefCadError)
-    if issubclass(error, InputTypeError):
-        assert isinstance(exc, TypeError)
-    if issubclass(error, InvalidInputError):
-        assert isinstance(exc, ValueError)
-    for word in words:
-        assert word in str(exc), (word, str(exc))
 
 
 # ----------------------------------------------------------------------------- bad values
