@@ -34,6 +34,7 @@ from numpy.typing import NDArray
 
 from ._checks import (
     DEFAULT_BUDGET,
+    MAX_WEIGHT_RATIO,
     as_index_array,
     as_real_array,
     check_budget,
@@ -332,6 +333,8 @@ def _check_curve_weights(w: FloatArray, off: NDArray[np.int64]) -> None:
     if not np.all(w > 0.0):
         i = int(np.argmin(w > 0.0))
         raise WeightError(f"weights should all be > 0; weight {i} is {float(w[i])!r}")
+    if float(np.max(w, initial=1.0)) <= MAX_WEIGHT_RATIO * float(np.min(w, initial=1.0)):
+        return  # no curve's ratio exceeds that of all weights together
     ratio = np.maximum.reduceat(w, off[:-1]) / np.minimum.reduceat(w, off[:-1])
     worst = int(np.argmax(ratio))
     check_weights(w[off[worst]:off[worst + 1]], f"the weights of curve {worst}")
