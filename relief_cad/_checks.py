@@ -32,6 +32,7 @@ from .errors import (
     InputTypeError,
     InvalidInputError,
     NonFiniteError,
+    ShapeError,
     SpanError,
     ToleranceError,
     ToleranceTypeError,
@@ -48,11 +49,13 @@ __all__ = [
     "MAX_WEIGHT_RATIO",
     "OnBudget",
     "as_index_array",
+    "as_points",
     "as_real_array",
     "check_degree",
     "check_distance",
     "check_flag",
     "check_finite",
+    "check_given_tol",
     "check_param",
     "check_span",
     "check_weights",
@@ -61,6 +64,7 @@ __all__ = [
     "check_curve",
     "check_on_budget",
     "check_tol",
+    "check_unit",
     "check_workers",
 ]
 
@@ -143,8 +147,17 @@ def check_tol(tol: Any, name: str = "tol") -> float | None:
     ...
     relief_cad.errors.ToleranceError: tol should be a finite distance > 0 in model units, not 0.0
     """
-    if tol is None:
-        return None
+    return None if tol is None else check_given_tol(tol, name)
+
+
+def check_given_tol(tol: Any, name: str = "tol") -> float:
+    """:func:`check_tol` where there is no default: ``None`` is refused too (a resolved tolerance).
+
+    >>> check_given_tol(None)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ToleranceTypeError: tol should be a distance > 0 in model units (a float), not NoneType
+    """
     value = _distance(tol, name, False)
     return tol if isinstance(tol, ModelTolerance) else value  # a model's tolerance keeps its type
 
@@ -343,6 +356,26 @@ def as_index_array(value: Any, name: str) -> NDArray[np.int64]:
     return np.ascontiguousarray(raw, dtype=np.int64)
 
 
+def as_points(value: Any, name: str, dim: int | None = None, least: int = 0) -> FloatArray:
+    """Return points as a new float64 array of shape ``(n, dim)`` (``n >= least``), finite.
+
+    ``dim`` None takes any dimension >= 1. The one check of arrays of points (:func:`as_real_array`,
+    the shape, :func:`check_finite`).
+
+    >>> as_points([[0.0, 1.0, 2.0]], "nodes", dim=2, least=2)
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.ShapeError: nodes should have shape (n, 2) with n >= 2, not (1, 3)
+    """
+    arr = as_real_array(value, name)
+    if arr.ndim != 2 or arr.shape[0] < least or (arr.shape[1] != dim if dim else arr.shape[1] < 1):
+        rules = ([f"n >= {least}"] if least else []) + ([] if dim else ["dim >= 1"])
+        raise ShapeError(f"{name} should have shape (n, {dim or 'dim'})"
+                         f"{' with ' + ' and '.join(rules) if rules else ''}, not {arr.shape}")
+    check_finite(arr, name)
+    return arr
+
+
 def check_finite(arr: FloatArray, name: str) -> None:
     """Raise :class:`~relief_cad.errors.NonFiniteError` naming the first NaN or infinite entry.
 
@@ -433,6 +466,20 @@ def check_param(t: Any, name: str) -> float:
                              "for a float") from exc
     if not math.isfinite(value):
         raise NonFiniteError(f"{name} should be a finite number, not {value!r}")
+    return value
+
+
+def check_unit(t: Any, name: str) -> float:
+    """Return a curve parameter in ``[0, 1]`` as a float (:func:`check_param`, then the range).
+
+    >>> check_unit(1.5, "t")
+    Traceback (most recent call last):
+    ...
+    relief_cad.errors.InvalidInputError: t should be a parameter in [0, 1], not 1.5
+    """
+    value = check_param(t, name)
+    if not 0.0 <= value <= 1.0:
+        raise InvalidInputError(f"{name} should be a parameter in [0, 1], not {value!r}")
     return value
 
 

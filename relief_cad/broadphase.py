@@ -27,7 +27,7 @@ from collections.abc import Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-from ._checks import as_index_array, as_real_array, check_distance, check_finite
+from ._checks import as_index_array, as_points, as_real_array, check_distance, check_finite
 from .errors import InputTypeError, InvalidInputError, ShapeError
 
 __all__ = ["box_pairs", "box_pairs_between", "cluster_points"]
@@ -55,11 +55,7 @@ def _boxes(lows: object, highs: object, names: tuple[str, str]) -> tuple[FloatAr
 
 def _points(points: object) -> FloatArray:
     """Check the points of :func:`cluster_points`: a finite array of shape ``(n, dim)``, ``dim >= 1``."""
-    pts = as_real_array(points, "points")
-    if pts.ndim != 2 or pts.shape[1] == 0:
-        raise ShapeError(f"points should have shape (n, dim) with dim >= 1, not {pts.shape}")
-    check_finite(pts, "points")
-    return pts
+    return as_points(points, "points")
 
 
 def _links(links: object, n: int) -> IntArray:

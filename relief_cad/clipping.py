@@ -36,6 +36,7 @@ from ._checks import (
     DEFAULT_BUDGET,
     MAX_WEIGHT_RATIO,
     as_index_array,
+    as_points,
     as_real_array,
     check_budget,
     check_distance,
@@ -75,11 +76,7 @@ RESULT_COLUMNS: tuple[str, ...] = ("pair", "kind", "t", "u", "t1", "u1", "x", "y
 
 def _points(nodes: object, name: str = "nodes") -> FloatArray:
     """``nodes`` as a new float64 array of shape (m + 1, 2), m >= 1, of finite numbers (checked)."""
-    arr = as_real_array(nodes, name)
-    if arr.ndim != 2 or arr.shape[1] != 2 or arr.shape[0] < 2:
-        raise ShapeError(f"{name} should have shape (m + 1, 2) with m >= 1, not {arr.shape}")
-    check_finite(arr, name)
-    return arr
+    return as_points(nodes, name, dim=2, least=2)
 
 
 def _weights(weights: object, n: int, name: str = "weights") -> FloatArray:

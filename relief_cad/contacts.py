@@ -43,7 +43,7 @@ from typing import Literal
 import numpy as np
 from numpy.polynomial import polynomial as P
 
-from ._checks import check_curve, check_flag, check_param, check_tol
+from ._checks import check_curve, check_flag, check_given_tol, check_unit
 from ._kernels.batch import ends_match
 from ._kernels.bezier import max_abs
 from ._kernels.certify import fold_bisect
@@ -52,7 +52,7 @@ from ._kernels.polish import _end_ratio, foot_newton, foot_seeds, surely_far
 from ._kernels.polish import _spread as _spread_one
 from ._types import FloatArray
 from .curves import RationalBezier, _decasteljau
-from .errors import InputTypeError, InvalidInputError, ShapeError, ToleranceTypeError
+from .errors import InputTypeError, InvalidInputError, ShapeError
 from .results import Intersection, Overlap, Result
 from .tolerances import _rounding_floor
 
@@ -80,35 +80,7 @@ _SINGULAR = 1e-9  # |derivative| / size below which the first non-vanishing deri
 
 # ---------------------------------------------------------------------------- input checks
 # Only the public functions check (through relief_cad._checks); relief_cad's own calls take the
-# private ``_f`` of each, unchecked. relief_cad.pieces uses _check_tol and _check_unit too.
-def _check_tol(tol: object) -> float:
-    """``tol`` as a distance > 0 in model units: :func:`~relief_cad._checks.check_tol`, ``None`` refused.
-
-    >>> _check_tol(None)
-    Traceback (most recent call last):
-    ...
-    relief_cad.errors.ToleranceTypeError: tol should be a distance > 0 in model units (a float), not NoneType
-    """
-    value = check_tol(tol)
-    if value is None:  # no default here: the caller's tolerance is already resolved
-        raise ToleranceTypeError("tol should be a distance > 0 in model units (a float), not NoneType")
-    return value
-
-
-def _check_unit(t: object, name: str) -> float:
-    """``t`` as a curve parameter: a finite float in ``[0, 1]``.
-
-    >>> _check_unit(1.5, "t")
-    Traceback (most recent call last):
-    ...
-    relief_cad.errors.InvalidInputError: t should be a parameter in [0, 1], not 1.5
-    """
-    value = check_param(t, name)
-    if not 0.0 <= value <= 1.0:
-        raise InvalidInputError(f"{name} should be a parameter in [0, 1], not {value!r}")
-    return value
-
-
+# private ``_f`` of each, unchecked.
 def _check_side(side: object) -> Literal[1, -1]:
     """``side`` when it is the int ``1`` or ``-1`` (not a bool, not a float)."""
     if isinstance(side, bool) or not isinstance(side, numbers.Integral):
@@ -579,7 +551,7 @@ def refine_self(c: RationalBezier, items: Sequence[Result], tol: float) -> list[
     ...
     relief_cad.errors.ToleranceError: tol should be a finite distance > 0 in model units, not -1e-09
     """
-    return _refine_self(check_curve(c, "c"), _check_results(items), _check_tol(tol))
+    return _refine_self(check_curve(c, "c"), _check_results(items), check_given_tol(tol))
 
 
 def _refine_self(c: RationalBezier, items: Sequence[Result], tol: float) -> list[Result]:
@@ -665,7 +637,7 @@ def curve_direction(c: RationalBezier, t: float, side: Literal[1, -1] = 1) -> Fl
     ...
     relief_cad.errors.InvalidInputError: side should be 1 or -1, not 0
     """
-    return _curve_direction(check_curve(c, "c"), _check_unit(t, "t"), _check_side(side))
+    return _curve_direction(check_curve(c, "c"), check_unit(t, "t"), _check_side(side))
 
 
 def _curve_direction(c: RationalBezier, t: float, side: Literal[1, -1] = 1) -> FloatArray:
@@ -902,7 +874,7 @@ def whole_overlap(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap |
     ...
     relief_cad.errors.InputTypeError: b should be a RationalBezier, not ndarray
     """
-    return _whole_overlap(check_curve(a, "a"), check_curve(b, "b"), _check_tol(tol))
+    return _whole_overlap(check_curve(a, "a"), check_curve(b, "b"), check_given_tol(tol))
 
 
 def _whole_overlap(a: RationalBezier, b: RationalBezier, tol: float) -> Overlap | None:
@@ -1063,7 +1035,7 @@ def refine_contacts(a: RationalBezier, b: RationalBezier, items: Sequence[Result
     relief_cad.errors.ToleranceError: tol should be a finite distance > 0 in model units, not nan
     """
     ca, cb = _check_pair(a, b)
-    return _refine_contacts(ca, cb, _check_results(items), _check_tol(tol))
+    return _refine_contacts(ca, cb, _check_results(items), check_given_tol(tol))
 
 
 def _refine_contacts(a: RationalBezier, b: RationalBezier, items: Sequence[Result],

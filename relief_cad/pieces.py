@@ -20,12 +20,11 @@ from collections.abc import Callable
 
 import numpy as np
 
-from ._checks import as_real_array, check_count, check_curve, check_finite, check_flag
+from ._checks import as_points, check_count, check_curve, check_flag, check_given_tol, check_unit
 from ._kernels.certify import fold_bisect
 from ._types import FloatArray, PointsLike
-from .contacts import _check_tol, _check_unit
 from .curves import RationalBezier
-from .errors import DegenerateCurveError, InputTypeError, InvalidInputError, ShapeError
+from .errors import DegenerateCurveError, InputTypeError, InvalidInputError
 
 __all__ = ["along_chord", "monotone_pieces", "one_place"]
 
@@ -63,13 +62,9 @@ def along_chord(points: PointsLike) -> bool:
     >>> along_chord([[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]])
     Traceback (most recent call last):
     ...
-    relief_cad.errors.ShapeError: points should have shape (m, 2) with m >= 2 (planar points), not (2, 3)
+    relief_cad.errors.ShapeError: points should have shape (n, 2) with n >= 2, not (2, 3)
     """
-    pts = as_real_array(points, "points")
-    if pts.ndim != 2 or pts.shape[1] != 2 or pts.shape[0] < 2:
-        raise ShapeError(f"points should have shape (m, 2) with m >= 2 (planar points), not {pts.shape}")
-    check_finite(pts, "points")
-    return _along_chord(pts.tolist())
+    return _along_chord(as_points(points, "points", dim=2, least=2).tolist())
 
 
 def _along_chord(points: list[list[float]]) -> bool:
@@ -172,11 +167,11 @@ def one_place(curve: RationalBezier, t: float, u: float, tol: float) -> bool:
     relief_cad.errors.InvalidInputError: u should be a parameter in [0, 1], not 1.5
     """
     checked = check_curve(curve, "curve")
-    tv, uv = _check_unit(t, "t"), _check_unit(u, "u")
+    tv, uv = check_unit(t, "t"), check_unit(u, "u")
     if tv == uv:
         raise DegenerateCurveError("t and u should be two different parameters (the ends of an arc), "
                                    f"not both {tv!r}")
-    return _one_place(checked, tv, uv, _check_tol(tol))
+    return _one_place(checked, tv, uv, check_given_tol(tol))
 
 
 def _one_place(curve: RationalBezier, t: float, u: float, tol: float) -> bool:
@@ -230,7 +225,7 @@ def monotone_pieces(curve: RationalBezier, tol: float, simple: Callable[[FloatAr
     ...
     relief_cad.errors.InputTypeError: max_depth should be an int >= 0, not float
     """
-    checked, tol_v = check_curve(curve, "curve"), _check_tol(tol)
+    checked, tol_v = check_curve(curve, "curve"), check_given_tol(tol)
     if not callable(simple):
         raise InputTypeError("simple should be a callable (control points -> bool), "
                              f"not {type(simple).__name__}")
